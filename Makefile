@@ -1,0 +1,28 @@
+# Top-level Makefile: the 1983 Cartesian robot on an emulated PDP-11/23.
+#   make        build everything (simulator, FORTH kernel, disk image)
+#   make run    the interactive FORTH console
+#   make test   the test suite (pytest)
+#   make bench  benchmarks, printing their figures
+# Each part has its own fragment in mk/; fragments add to ALL_PRODUCTS and BENCHES.
+SHELL := /bin/bash
+BUILD := build
+CC    ?= gcc
+ALL_PRODUCTS :=
+BENCHES :=
+.DEFAULT_GOAL := all
+
+include mk/simh.mk
+include mk/python.mk
+include $(filter-out mk/simh.mk mk/python.mk,$(wildcard mk/*.mk))
+
+all: $(ALL_PRODUCTS)
+
+test: all venv
+	@$(PY) -m pytest -q tests
+
+bench: all venv $(BENCHES)
+
+clean:
+	rm -rf $(BUILD)
+
+.PHONY: all test bench clean run
