@@ -1,0 +1,2 @@
+"""The harness: drives the emulated PDP-11/23, packs and exports block disks,
+runs scripted regressions, draws plots and listings."""
