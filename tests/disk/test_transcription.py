@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from harness.blockfile import problems_in_text, split_lines, text_to_block
+from harness.blockfile import fused_line_ends, problems_in_text, split_lines, text_to_block
 from harness.forthscan import check_load, words
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -64,6 +64,7 @@ def test_every_block_file_is_well_formed_16_lines():
         text = (BLOCKS / f"{n}.txt").read_text()
         assert problems_in_text(text, f"{n}.txt") == []
         assert len(split_lines(text)) == 16, f"{n}.txt has not 16 lines"
+        assert fused_line_ends(text_to_block(text)) == [], f"{n}.txt: lines run together"
 
 
 def test_line_0_of_each_block_is_a_title_comment():
