@@ -32,6 +32,17 @@ def block_file_name(n):
     return f"{n:04d}.txt"
 
 
+def block_ranges(numbers):
+    """'1000-1012, 1020' for the block numbers 1000..1012 and 1020."""
+    spans = []
+    for n in sorted(numbers):
+        if spans and n == spans[-1][1] + 1:
+            spans[-1][1] = n
+        else:
+            spans.append([n, n])
+    return ", ".join(f"{a}-{b}" if a != b else f"{a}" for a, b in spans)
+
+
 def check_block_number(n, what="block"):
     if not 0 <= n < BLOCKS:
         raise DiskError(f"{what} {n} is outside the RL02 disk (blocks 0-{BLOCKS - 1})")

@@ -1,8 +1,8 @@
 """`disk`: pack a blocks/ directory into an RL02 image, export blocks back to text."""
 import sys
 
-from harness.disk import (BLOCKS, DiskError, carry_out_export, pack, plan_export,
-                          read_block_dir, read_image, write_atomic)
+from harness.disk import (BLOCKS, DiskError, block_ranges, carry_out_export, pack,
+                          plan_export, read_block_dir, read_image, write_atomic)
 
 NAME = "disk"
 HELP = "RL02 block disk images: pack block text files, export blocks to text"
@@ -47,7 +47,7 @@ def run_pack(args):
         raise DiskError(f"{args.image}: cannot write the image: {err.strerror}") from err
     numbers = sorted(blocks)
     print(f"{args.image}: {len(numbers)} blocks packed from {args.source_dir} "
-          f"({_ranges(numbers)})")
+          f"({block_ranges(numbers)})")
     return 0
 
 
@@ -65,16 +65,5 @@ def run_export(args):
         print(f"no blocks to export: blocks {args.first}-{args.last} of {args.image} "
               "are blank (--all exports blank blocks)")
     elif skipped and args.last - args.first < 100:
-        print(f"blank, not exported: {_ranges(skipped)} (--all exports them)")
+        print(f"blank, not exported: {block_ranges(skipped)} (--all exports them)")
     return 0
-
-
-def _ranges(numbers):
-    """'1000-1012, 1020' for [1000, ..., 1012, 1020]."""
-    spans = []
-    for n in numbers:
-        if spans and n == spans[-1][1] + 1:
-            spans[-1][1] = n
-        else:
-            spans.append([n, n])
-    return ", ".join(f"{a}-{b}" if a != b else f"{a}" for a, b in spans)

@@ -7,6 +7,7 @@ from pathlib import Path
 import pytest
 
 from harness.blockfile import fused_line_ends, problems_in_text, split_lines, text_to_block
+from harness.disk import block_ranges
 from harness.forthscan import check_load, words
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -97,12 +98,19 @@ def test_every_word_is_defined_earlier_or_by_the_kernel():
     assert problems == [] and "Demo" in demo
 
 
-def test_every_kernel_word_listed_is_used():
-    """The list is what the blocks need: nothing more."""
-    used = {w.text.upper() for n, b in packed(list(APPENDIX) + [1020]).items()
-            for w in words(b, n)}
-    for word in kernel_words("FORTH vocabulary") + kernel_words("ASSEMBLER vocabulary"):
-        assert word.upper() in used | {"("}, f"{word} is listed but never used"
+def test_the_kernel_word_list_says_exactly_where_each_word_is_used():
+    """The list is what the blocks need, nothing more, and its "used in" column is true."""
+    used = {"(": set(APPENDIX) | {1020}}
+    for n, block in packed(list(APPENDIX) + [1020]).items():
+        for word in words(block, n):
+            used.setdefault(word.text.upper(), set()).add(n)
+    text = (BLOCKS / "KERNEL-WORDS.md").read_text()
+    table = re.findall(r"^\| `([^`]+)` \| [^|]+? \| ([^|]+?) \|", text, re.M)
+    assert len(table) == len(kernel_words("FORTH vocabulary") +
+                             kernel_words("ASSEMBLER vocabulary"))
+    for word, where in table:
+        assert word.upper() in used, f"{word} is listed but never used"
+        assert where == block_ranges(used[word.upper()]), word
 
 
 @pytest.mark.parametrize("block, old, new, expected", [
