@@ -17,7 +17,7 @@
 
    Time base: simulated seconds = instructions / RATE (SET CLK RATE=n,
    default 300000, the KDF11-A's typical speed). Changing RATE keeps the time
-   continuous. SIMH's SET THROTTLE paces the run to the wall clock when asked;
+   continuous: pending ticks and trace samples keep their simulated times. SIMH's SET THROTTLE paces the run to the wall clock when asked;
    nothing here reads the host's clock.
 
    Devices SIMH paces from the clock (console polling, RQ's timer) read
@@ -50,6 +50,16 @@ static t_stat kwl_show_state (FILE *st, UNIT *uptr, int32 val, void *desc);
 double robot_time (void)
 {
     return base_time_s + (sim_gtime () - base_instr) / (double) robot_rate;
+}
+
+void robot_rescale (UNIT *uptr, int32 old_rate)
+{
+    int32 left = sim_is_active (uptr);          /* instructions to go, plus one */
+    if (left > 0) {
+        double t = (double) (left - 1) * robot_rate / old_rate;
+        sim_cancel (uptr);
+        sim_activate (uptr, (int32) (t + 0.5));
+    }
 }
 
 int32 robot_share (int32 per_second, int32 *acc)
@@ -136,6 +146,7 @@ static t_stat kwl_set_rate (UNIT *uptr, int32 val, char *cptr, void *desc)
 {
     char *end;
     long r;
+    int32 old;
     if (cptr == NULL || *cptr == 0)
         return SCPE_MISVAL;
     r = strtol (cptr, &end, 10);
@@ -147,8 +158,12 @@ static t_stat kwl_set_rate (UNIT *uptr, int32 val, char *cptr, void *desc)
     plant_dev_catch_up ();                       /* the plant lives in the old time */
     base_time_s = robot_time ();
     base_instr = sim_gtime ();
+    old = robot_rate;
     robot_rate = (int32) r;
     tmr_poll = tmxr_poll = robot_rate / TICKS_PER_S;
+    robot_rescale (&kwl_unit, old);              /* the next tick keeps its time */
+    tick_acc = 0;
+    plant_dev_rate_changed (old);
     console_pacing_rate_changed ();
     return SCPE_OK;
 }

@@ -113,6 +113,12 @@ uint16 plant_dev_counter (int axis)
     return plant_counter (&robot_plant, axis);
 }
 
+void plant_dev_rate_changed (int32 old_rate)
+{
+    robot_rescale (&plant_unit, old_rate);
+    sample_acc = 0;
+}
+
 void plant_dev_command_done (void)
 {
     sel_axis = -1;

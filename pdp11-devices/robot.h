@@ -10,6 +10,7 @@
 extern int32 robot_rate;                 /* instructions per simulated second */
 double robot_time (void);                /* simulated seconds since power-up */
 int32 robot_share (int32 per_second, int32 *acc);  /* next interval of an exact n/s series */
+void robot_rescale (UNIT *uptr, int32 old_rate);   /* keep an event's simulated time */
 
 /* Plant glue (plant_dev.c): the plant as the bus devices see it. */
 extern plant robot_plant;
@@ -17,7 +18,8 @@ void plant_dev_catch_up (void);                   /* integrate up to now */
 void plant_dev_dac (int axis, int code);          /* AAV11-A wrote a channel */
 void plant_dev_run_lines (int lines);             /* DRV11 OUTBUF bits 3:0 */
 uint16 plant_dev_counter (int axis);              /* DRV11 INBUF */
-void plant_dev_init (void);                        /* power-up state */
+void plant_dev_init (void);
+void plant_dev_rate_changed (int32 old_rate);                        /* power-up state */
 void plant_dev_command_done (void);               /* after each SCP command */
 
 /* Console input pacing (console_pacing.c). */
