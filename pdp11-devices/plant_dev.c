@@ -87,7 +87,7 @@ void plant_dev_catch_up (void)
 static void trace_row (int axis)
 {
     const plant_axis *a = &robot_plant.ax[axis];
-    fprintf (plant_unit.fileref, "%.6f,%c,%d,%.3f,%.3f,%.3f,%d\n", robot_plant.now,
+    fprintf (plant_unit.fileref, "%.9f,%c,%d,%.3f,%.3f,%.3f,%d\n", robot_plant.now,
              plant_axis_names[axis], a->code, plant_vcmd (&robot_plant, axis), a->v, a->p,
              (int) (int16) plant_counter (&robot_plant, axis));
 }
