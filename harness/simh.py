@@ -6,11 +6,13 @@ The small, shared way for test code and tools to drive the simulator in batch:
     out = simh.run(simh.deposit(0o1000, [0o012700, 0o001234, 0]) + "go 1000\\nexamine r0\\n")
     simh.examined(out)["R0"]          # -> 0o1234
 
-run(script, machine=True, simulator=PDP11, timeout=120, cwd=None) -> str
+run(script, machine=True, simulator=PDP11, timeout=120, cwd=None, keyboard="") -> str
     Writes `script` to a temporary file and runs the simulator on it. With
     machine=True the script starts with `do pdp11-devices/machine.ini` (the
     shared machine configuration); `quit` is always appended, so the
-    simulator never waits at its prompt. stdin is empty. Returns stdout and
+    simulator never waits at its prompt. `keyboard` (text) is what the
+    console keyboard (DL11 TTI) receives, all of it available from the
+    start; the script itself is read from its file. Returns stdout and
     stderr together, as the simulator printed them. Raises SimhError if the
     simulator is missing, exits non-zero or outlives `timeout` (wall seconds:
     a guard only; simulated time never depends on it).
@@ -41,7 +43,7 @@ class SimhError(RuntimeError):
     """The simulator could not be run, failed, or did not finish in time."""
 
 
-def run(script, machine=True, simulator=PDP11, timeout=120, cwd=None):
+def run(script, machine=True, simulator=PDP11, timeout=120, cwd=None, keyboard=""):
     simulator = Path(simulator)
     if not simulator.exists():
         raise SimhError(f"{simulator} does not exist: run make first")
@@ -49,17 +51,17 @@ def run(script, machine=True, simulator=PDP11, timeout=120, cwd=None):
     if not text.endswith("\n"):
         text += "\n"
     text += "quit\n"
-    with tempfile.NamedTemporaryFile("w", suffix=".ini", delete=False) as f:
-        f.write(text)
-        path = f.name
-    try:
-        proc = subprocess.run([str(simulator), path], stdin=subprocess.DEVNULL,
-                              stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                              text=True, timeout=timeout, cwd=cwd)
-    except subprocess.TimeoutExpired as e:
-        raise SimhError(f"{simulator.name} did not finish within {timeout} s") from e
-    finally:
-        Path(path).unlink(missing_ok=True)
+    with tempfile.TemporaryDirectory() as tmp:
+        path, keys = Path(tmp) / "script.ini", Path(tmp) / "keyboard"
+        path.write_text(text)
+        keys.write_text(keyboard)           # a file, not a pipe: no race with the writer
+        try:
+            with open(keys) as stdin:
+                proc = subprocess.run([str(simulator), str(path)], stdin=stdin,
+                                      stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                      text=True, timeout=timeout, cwd=cwd)
+        except subprocess.TimeoutExpired as e:
+            raise SimhError(f"{simulator.name} did not finish within {timeout} s") from e
     if proc.returncode != 0:
         raise SimhError(f"{simulator.name} exited with {proc.returncode}:\n{proc.stdout}")
     return proc.stdout

@@ -107,10 +107,45 @@ def counter_wrap():
     return p.halt()
 
 
+RLCS, RLBA, RLDA, RLMP = 0o174400, 0o174402, 0o174404, 0o174406
+TKS, TKB = 0o177560, 0o177562
+
+
+def wait_ready(p, csr):
+    """TSTB csr / BPL back: wait for bit 7 (ready)."""
+    top = p.here
+    p.op(f"TSTB @#{csr:o}", 0o105737, csr)
+    return p.op(f"BPL {top:o}", 0o100375)
+
+
+def rl_write_read():
+    """SIMH's own RL11: write 256 words from 3000 to sector 0, read them back to 4000."""
+    p = Program()
+    for buffer, function in ((0o3000, 0o12), (0o4000, 0o14)):   # write data, read data
+        p.mov_imm(buffer, RLBA).clr_abs(RLDA).mov_imm(0o177400, RLMP).mov_imm(function, RLCS)
+        wait_ready(p, RLCS)
+    p.mov_abs(RLCS, R[0])
+    return p.halt()
+
+
+def console_reader(count):
+    """Read `count` characters from the console keyboard into 2000.., slowly."""
+    p = Program()
+    p.op("MOV #2000,R2", 0o012702, 0o2000)
+    p.op(f"MOV #{count:o},R3", 0o012703, count)
+    top = p.here
+    wait_ready(p, TKS)
+    p.op(f"MOVB @#{TKB:o},(R2)+", 0o113722, TKB)
+    p.mov_imm_reg(0o4000, 0).sob_self(0)          # slower than characters arrive
+    p.op(f"SOB R3,{top:o}", 0o077300 | ((p.here + 2 - top) // 2))
+    return p.halt()
+
+
 def all_programs():
     return {
         "lks_bits": lks_bits(), "clock_counter": clock_counter(),
         "drv_bits": drv_bits(), "drv_interrupts": drv_interrupts(0o140),
         "aav_bits": aav_bits(), "dac_step": dac_step([0o4144, 0o4144, 0o4144, 0o4144], 0o17),
-        "counter_wrap": counter_wrap(),
+        "counter_wrap": counter_wrap(), "rl_write_read": rl_write_read(),
+        "console_reader": console_reader(10),
     }
