@@ -2,7 +2,7 @@
 import pytest
 
 from harness import simh
-from pdp11prog import results, examine_results
+from harness.pdp11prog import results, examine_results
 import programs
 
 

@@ -3,7 +3,7 @@ second, interrupts at vector 100 only with IE set and priority below 6."""
 import pytest
 
 from harness import simh
-from pdp11prog import results, examine_results
+from harness.pdp11prog import results, examine_results
 import programs
 
 RATE = 300000

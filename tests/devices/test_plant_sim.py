@@ -5,7 +5,7 @@ import math
 import pytest
 
 from harness import simh
-from pdp11prog import results, examine_results
+from harness.pdp11prog import results, examine_results
 from plantio import AXES, QUIET, show_rows, read_trace
 import programs
 

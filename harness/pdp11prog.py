@@ -1,9 +1,10 @@
-"""Small hand-assembled PDP-11 programs for the device tests.
+"""Small hand-assembled PDP-11 programs (device tests, benchmark).
 
 Each instruction is written twice: its machine words (hand-assembled) and its
-text exactly as SIMH's `EXAMINE -M` disassembles them. test_assembly.py checks
-every program of these tests against SIMH's disassembler, so a wrong word
-cannot pass unnoticed.
+text exactly as SIMH's `EXAMINE -M` disassembles them; check_listing() runs
+SIMH's disassembler over a program and says where they differ
+(tests/devices/test_assembly.py does so for every test program, the benchmark
+before it measures), so a wrong word cannot pass unnoticed.
 
 Conventions: programs start at 1000; results go to 2000 upwards; interrupt
 handlers live at 1400 and up; the stack starts at 700; every vector not given
@@ -124,3 +125,17 @@ def results(output, count, base=RESULTS):
 
 def examine_results(count, base=RESULTS):
     return "".join(f"examine {base + 2 * i:o}\n" for i in range(count))
+
+
+def check_listing(prog, simulator=simh.PDP11):
+    """Mismatches between a program's texts and SIMH's disassembly of its words:
+    a list of (address, written, disassembled); empty when all agree."""
+    listing = prog.all_listing()
+    out = simh.run(prog.script(start=False) + "".join(f"examine -m {a:o}\n" for a, _ in listing),
+                   simulator=simulator)
+    got = {}
+    for line in out.splitlines():
+        addr, sep, text = line.partition(":\t")
+        if sep and addr.isdigit():
+            got[int(addr, 8)] = text.strip()
+    return [(a, t, got.get(a)) for a, t in listing if got.get(a) != t]
