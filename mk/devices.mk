@@ -35,7 +35,8 @@ $(BUILD)/pdp11: $(ROBOT_SIMH_OBJS) $(DEV_OBJS)
 $(BUILD)/plant_test: $(DEV_DIR)/plant_test.c $(ROBOT_OBJ)/plant.o
 	@$(CC) $(PLANT_CFLAGS) -o $@ $^ -lm
 
-ALL_PRODUCTS += $(BUILD)/pdp11 $(BUILD)/plant_test
+# pdp11-stock too: the reference the benchmark and tests/test_simh_stock.py use.
+ALL_PRODUCTS += $(BUILD)/pdp11 $(BUILD)/plant_test $(BUILD)/pdp11-stock
 
 bench-devices: $(BUILD)/pdp11 $(BUILD)/pdp11-stock venv
 	@$(PY) harness/bench_devices.py
