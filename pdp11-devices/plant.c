@@ -82,12 +82,10 @@ double plant_vcmd (const plant *pl, int axis)
     return vc > a->vmax ? a->vmax : (vc < -a->vmax ? -a->vmax : vc);
 }
 
-/* Exact solution over dt with vc fixed, then the end stops. */
-static void axis_step (plant *pl, int axis, double dt)
+/* Exact solution of the lag over dt from (p, v) with vc fixed, no stops. */
+static void lag (const plant_axis *a, double vc, double *pp, double *vp, double dt)
 {
-    plant_axis *a = &pl->ax[axis];
-    double vc = plant_vcmd (pl, axis);
-    double p = a->p, v = a->v, e = vc - v;
+    double p = *pp, v = *vp, e = vc - v;
     double limit = a->amax * a->tau_s;          /* |vc - v| above this: current-limited */
 
     if (fabs (e) > limit) {
@@ -104,12 +102,41 @@ static void axis_step (plant *pl, int axis, double dt)
         p += vc * dt + e * a->tau_s * expm1 (x);   /* integral of vc - e*exp(-t/tau) */
         v = vc - e * exp (x);
     }
-    if (p >= a->pmax) {                          /* stall against the stop */
-        p = a->pmax;
-        if (v > 0.0) v = 0.0;
-    } else if (p <= a->pmin) {
-        p = a->pmin;
-        if (v < 0.0) v = 0.0;
+    *pp = p;
+    *vp = v;
+}
+
+/* Which stop p lies beyond: +1 upper, -1 lower, 0 inside. */
+static int beyond (const plant_axis *a, double p)
+{
+    return p > a->pmax ? 1 : (p < a->pmin ? -1 : 0);
+}
+
+/* One event-free interval: the lag, and the end stops. v moves monotonically
+   towards vc, so p has at most one turning point and crosses a stop at most
+   once: bisection finds the moment of impact; from there the axis sits at the
+   stop with v = 0 while vc pushes outward, or leaves it from rest. */
+static void axis_step (plant *pl, int axis, double dt)
+{
+    plant_axis *a = &pl->ax[axis];
+    double vc = plant_vcmd (pl, axis);
+    double p = a->p, v = a->v;
+    int side;
+
+    lag (a, vc, &p, &v, dt);
+    if ((side = beyond (a, p)) != 0) {
+        double lo = 0.0, hi = dt, stop = side > 0 ? a->pmax : a->pmin;
+        for (int i = 0; i < 60 && hi - lo > 1e-12; i++) {
+            double mid = 0.5 * (lo + hi), pm = a->p, vm = a->v;
+            lag (a, vc, &pm, &vm, mid);
+            if (beyond (a, pm) == side) hi = mid; else lo = mid;
+        }
+        p = stop;
+        v = 0.0;
+        if (vc * side < 0.0) {                   /* pulled back inward: leave from rest */
+            lag (a, vc, &p, &v, dt - hi);
+            if (beyond (a, p) != 0) { p = stop; v = 0.0; }
+        }
     }
     a->p = p;
     a->v = v;

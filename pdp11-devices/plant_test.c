@@ -93,6 +93,33 @@ static void test_end_stops (void)
     check (pl.ax[AXIS_Z].p > -4000.0 && pl.ax[AXIS_Z].v > 0, "leaves the stop", pl.ax[AXIS_Z].p, -4000);
 }
 
+/* The solution is exact between events: reading the state often (every 0.1 ms)
+   or rarely (the 1 ms grid only) gives the same motion, stops included. */
+static void test_events_do_not_change_the_motion (void)
+{
+    plant a = quiet_plant (), b = quiet_plant ();
+    double worst = 0;
+    for (int ax = 0; ax < PLANT_AXES; ax++) {
+        plant_set_code (&a, ax, 4095); plant_set_code (&b, ax, 4095);
+    }
+    for (int k = 1; k <= 10000; k++) {
+        plant_advance (&b, k * 0.0001);
+        if (k % 10 == 0) {
+            plant_advance (&a, k * 0.0001);
+            for (int ax = 0; ax < PLANT_AXES; ax++) {
+                double d = fabs (a.ax[ax].p - b.ax[ax].p);
+                if (d > worst) worst = d;
+            }
+        }
+        if (k == 3000)                           /* both at 0.3 s: turn round */
+            for (int ax = 0; ax < PLANT_AXES; ax++) {
+                plant_set_code (&a, ax, 1000); plant_set_code (&b, ax, 1000);
+            }
+    }
+    check (worst < 1e-6, "frequent and rare events: same positions (counts)", worst, 0);
+    check (b.ax[AXIS_Z].p == -4000.0, "and both reach the stop", b.ax[AXIS_Z].p, -4000);
+}
+
 static void test_counter (void)
 {
     plant pl = quiet_plant ();
@@ -179,6 +206,7 @@ int main (void)
     test_step_response ();
     test_accel_limit ();
     test_end_stops ();
+    test_events_do_not_change_the_motion ();
     test_counter ();
     test_drift ();
     test_determinism_and_walk ();
