@@ -277,7 +277,7 @@ static t_stat plant_show_axes (FILE *st, UNIT *uptr, int32 val, void *desc)
     }
     fprintf (st, "\n  axis  KV        TAU(ms)  AMAX       VMAX      PMIN       PMAX       WALK");
     for (int i = 0; i < PLANT_AXES; i++)
-        fprintf (st, "\n  %c   %-9g %-8g %-10g %-9g %-10g %-10g %g", plant_axis_names[i],
+        fprintf (st, "\n  %c     %-9g %-8g %-10g %-9g %-10g %-10g %g", plant_axis_names[i],
                  plant_get_param (&robot_plant, i, P_KV), plant_get_param (&robot_plant, i, P_TAU),
                  plant_get_param (&robot_plant, i, P_AMAX), plant_get_param (&robot_plant, i, P_VMAX),
                  plant_get_param (&robot_plant, i, P_PMIN), plant_get_param (&robot_plant, i, P_PMAX),
