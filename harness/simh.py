@@ -15,7 +15,8 @@ run(script, machine=True, simulator=PDP11, timeout=120, cwd=None, keyboard="") -
     start; the script itself is read from its file. Returns stdout and
     stderr together, as the simulator printed them. Raises SimhError if the
     simulator is missing, exits non-zero or outlives `timeout` (wall seconds:
-    a guard only; simulated time never depends on it).
+    a guard only; simulated time never depends on it). A program that never
+    halts needs `step N` (N instructions) rather than `go`.
 deposit(address, words) -> str
     Script lines depositing `words` (ints) at consecutive even addresses.
 examined(output, radix=8) -> dict
