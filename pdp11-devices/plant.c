@@ -64,6 +64,7 @@ void plant_init (plant *pl, uint64_t seed)
         a->p = a->v = a->w = a->p0 = 0.0;
         a->code = PLANT_CODE_ZERO;
         a->run = 0;
+        a->grid_tau = 0.0;
     }
     pl->now = 0.0;
     pl->grid = 0;
@@ -82,8 +83,20 @@ double plant_vcmd (const plant *pl, int axis)
     return vc > a->vmax ? a->vmax : (vc < -a->vmax ? -a->vmax : vc);
 }
 
+/* expm1(-dt/tau); a whole grid step (the common case) is computed once per tau. */
+static double decay_m1 (plant_axis *a, double dt)
+{
+    if (dt != PLANT_GRID_S)
+        return expm1 (-dt / a->tau_s);
+    if (a->grid_tau != a->tau_s) {
+        a->grid_tau = a->tau_s;
+        a->grid_em1 = expm1 (-PLANT_GRID_S / a->tau_s);
+    }
+    return a->grid_em1;
+}
+
 /* Exact solution of the lag over dt from (p, v) with vc fixed, no stops. */
-static void lag (const plant_axis *a, double vc, double *pp, double *vp, double dt)
+static void lag (plant_axis *a, double vc, double *pp, double *vp, double dt)
 {
     double p = *pp, v = *vp, e = vc - v;
     double limit = a->amax * a->tau_s;          /* |vc - v| above this: current-limited */
@@ -97,10 +110,12 @@ static void lag (const plant_axis *a, double vc, double *pp, double *vp, double 
         dt -= tl;
         e = (dt > 0.0) ? s * limit : vc - v;    /* exact at the phase change */
     }
-    if (dt > 0.0) {
-        double x = -dt / a->tau_s;
-        p += vc * dt + e * a->tau_s * expm1 (x);   /* integral of vc - e*exp(-t/tau) */
-        v = vc - e * exp (x);
+    if (dt > 0.0 && e == 0.0) {                  /* settled: v == vc exactly */
+        p += vc * dt;
+    } else if (dt > 0.0) {
+        double m1 = decay_m1 (a, dt);            /* exp(-dt/tau) - 1 */
+        p += vc * dt + e * a->tau_s * m1;        /* integral of vc - e*exp(-t/tau) */
+        v = vc - e * (m1 + 1.0);
     }
     *pp = p;
     *vp = v;
@@ -121,8 +136,10 @@ static void axis_step (plant *pl, int axis, double dt)
     plant_axis *a = &pl->ax[axis];
     double vc = plant_vcmd (pl, axis);
     double p = a->p, v = a->v;
-    int side;
+    int side = plant_at_stop (pl, axis);
 
+    if (side != 0 && v == 0.0 && vc * side >= 0.0)
+        return;                                  /* stalled against the stop */
     lag (a, vc, &p, &v, dt);
     if ((side = beyond (a, p)) != 0) {
         double lo = 0.0, hi = dt, stop = side > 0 ? a->pmax : a->pmin;
@@ -145,7 +162,7 @@ static void axis_step (plant *pl, int axis, double dt)
 static void walk_step (plant_axis *a)
 {
     if (a->walk > 0.0)
-        a->w += a->walk * sqrt (PLANT_GRID_S) * normal (&a->rng);
+        a->w += a->walk * sqrt (PLANT_GRID_S * PLANT_WALK_STEPS) * normal (&a->rng);
 }
 
 static void step_all (plant *pl, double dt)
@@ -161,11 +178,13 @@ void plant_advance (plant *pl, double t)
     for (;;) {
         double tg = (double) (pl->grid + 1) * PLANT_GRID_S;
         if (tg > t) break;
-        step_all (pl, tg - pl->now);
+        /* on the grid, a step is exactly PLANT_GRID_S (the cached case) */
+        step_all (pl, pl->now == (double) pl->grid * PLANT_GRID_S ? PLANT_GRID_S : tg - pl->now);
         pl->now = tg;
         pl->grid++;
-        for (int i = 0; i < PLANT_AXES; i++)
-            walk_step (&pl->ax[i]);
+        if (pl->grid % PLANT_WALK_STEPS == 0)
+            for (int i = 0; i < PLANT_AXES; i++)
+                walk_step (&pl->ax[i]);
     }
     step_all (pl, t - pl->now);
     pl->now = t;

@@ -10,7 +10,7 @@
      p stays inside [pmin, pmax]; at a stop the motor stalls (v = 0 while it
      pushes outward)
      offset = base + w, w a seeded random walk (walk codes per sqrt(s)),
-     stepped on a fixed 1 ms grid of simulated time
+     stepped every 0.1 s on the fixed grid of simulated time
      counter = floor(p - p0) mod 65536 while the run line is 1 (p0 = p when
      the run line went to 1), 0 while it is 0
 
@@ -25,6 +25,7 @@
 
 #define PLANT_AXES   4
 #define PLANT_GRID_S 0.001                 /* simulated seconds per grid step */
+#define PLANT_WALK_STEPS 100               /* grid steps per offset-walk step (0.1 s) */
 #define PLANT_CODE_ZERO 2048
 
 enum { AXIS_X, AXIS_Y, AXIS_Z, AXIS_T };
@@ -50,6 +51,7 @@ typedef struct {
     int code;                  /* last DAC code */
     int run;                   /* counter run line */
     uint64_t rng;              /* this axis's random stream */
+    double grid_tau, grid_em1; /* cache: expm1(-PLANT_GRID_S / tau) for that tau */
 } plant_axis;
 
 typedef struct {
