@@ -15,9 +15,11 @@
      the run line went to 1), 0 while it is 0
 
    Between events the lag is solved exactly (constant-acceleration segment
-   while the current limit binds, then the exponential). Events: every 1 ms
-   grid point (offset walk, end-stop check) and whatever the caller adds by
-   advancing to a time (DAC write, counter read, trace sample). */
+   while the current limit binds, then the exponential); a stop is met at the
+   moment of impact (bisection on that solution). Events: every point of a
+   fixed 1 ms grid of simulated time (every 100th also steps the walk), and
+   whatever the caller adds by advancing to a time (DAC write, counter read,
+   trace sample). Default walk 0.02 codes per sqrt(s), seed 1983. */
 #ifndef PLANT_H
 #define PLANT_H
 
