@@ -56,3 +56,11 @@ def test_bad_rate_is_refused_and_kept():
 def test_throttle_is_available():
     out = simh.run("set throttle 300k\nshow throttle\nset nothrottle\n")
     assert "Throttle = 300 kilocycles" in out
+
+
+def test_changing_rate_mid_run_keeps_time_and_ticks_continuous():
+    prog = programs.clock_counter()
+    out = simh.run(prog.script(start=False) + f"step {RATE}\nset clk rate=150000\n"
+                   "step 150000\nexamine clk ticks\nshow clk state\n")
+    assert simh.examined(out, radix=10)["TICKS"] == 119     # the 120th lands at 2.000 s
+    assert "time=2.000000s" in out

@@ -130,3 +130,10 @@ def test_show_devices_lists_the_robot_devices():
         assert dev in names
     assert "CLK, rate=300000 instructions/s" in out
     assert "DRV11, CSR=000000" in out and "vector=300-304" in out
+
+
+def test_sample_0_traces_dac_writes_only(tmp_path):
+    out, rows = traced_run(tmp_path, [2148, 2048, 2048, 1948], 0.5, sample=0)
+    assert [(r["axis"], r["dac"]) for r in rows] == [("X", 2148), ("Y", 2048), ("Z", 2048),
+                                                     ("T", 1948)]
+    assert all(r["t"] < 1e-4 for r in rows)
