@@ -1,8 +1,6 @@
-"""Device tests drive build/pdp11 through harness/simh.py."""
+"""Device tests drive build/pdp11 through harness/simh.py (the root conftest makes
+harness importable); their own helper modules (programs, plantio) live here."""
 import sys
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[2]
-if str(ROOT) not in sys.path:
-    sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(Path(__file__).resolve().parent))
