@@ -9,9 +9,9 @@ line to COMMANDS.
 import argparse
 import sys
 
-from harness.commands import disk
+from harness.commands import disk, plot
 
-COMMANDS = (disk,)
+COMMANDS = (disk, plot)
 
 
 def build_parser():
