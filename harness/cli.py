@@ -9,9 +9,9 @@ line to COMMANDS.
 import argparse
 import sys
 
-from harness.commands import disk, plot
+from harness.commands import disk, plot, timing
 
-COMMANDS = (disk, plot)
+COMMANDS = (disk, plot, timing)
 
 
 def build_parser():

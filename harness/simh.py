@@ -17,6 +17,8 @@ run(script, machine=True, simulator=PDP11, timeout=120, cwd=None, keyboard="") -
     simulator is missing, exits non-zero or outlives `timeout` (wall seconds:
     a guard only; simulated time never depends on it). A program that never
     halts needs `step N` (N instructions) rather than `go`.
+stream(script, ...) -> context manager yielding an iterator of output lines
+    The same as run(), for output too large to hold in memory.
 deposit(address, words) -> str
     Script lines depositing `words` (ints) at consecutive even addresses.
 examined(output, radix=8) -> dict
@@ -27,9 +29,11 @@ examined(output, radix=8) -> dict
 examined_all(output, radix=8) -> list of (name, int)
     The same, in order, keeping repeats.
 """
+import contextlib
 import re
 import subprocess
 import tempfile
+import threading
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -44,10 +48,10 @@ class SimhError(RuntimeError):
     """The simulator could not be run, failed, or did not finish in time."""
 
 
-def run(script, machine=True, simulator=PDP11, timeout=120, cwd=None, keyboard=""):
-    simulator = Path(simulator)
-    if not simulator.exists():
-        raise SimhError(f"{simulator} does not exist: run make first")
+@contextlib.contextmanager
+def _script_files(script, machine, keyboard):
+    """A temporary directory holding the script (machine.ini first, `quit`
+    last) and the keyboard file; yields their paths."""
     text = (f"do {MACHINE_INI}\n" if machine else "") + script
     if not text.endswith("\n"):
         text += "\n"
@@ -56,6 +60,19 @@ def run(script, machine=True, simulator=PDP11, timeout=120, cwd=None, keyboard="
         path, keys = Path(tmp) / "script.ini", Path(tmp) / "keyboard"
         path.write_text(text)
         keys.write_text(keyboard)           # a file, not a pipe: no race with the writer
+        yield path, keys
+
+
+def _check_simulator(simulator):
+    simulator = Path(simulator)
+    if not simulator.exists():
+        raise SimhError(f"{simulator} does not exist: run make first")
+    return simulator
+
+
+def run(script, machine=True, simulator=PDP11, timeout=120, cwd=None, keyboard=""):
+    simulator = _check_simulator(simulator)
+    with _script_files(script, machine, keyboard) as (path, keys):
         try:
             with open(keys) as stdin:
                 proc = subprocess.run([str(simulator), str(path)], stdin=stdin,
@@ -66,6 +83,33 @@ def run(script, machine=True, simulator=PDP11, timeout=120, cwd=None, keyboard="
     if proc.returncode != 0:
         raise SimhError(f"{simulator.name} exited with {proc.returncode}:\n{proc.stdout}")
     return proc.stdout
+
+
+@contextlib.contextmanager
+def stream(script, machine=True, simulator=PDP11, timeout=600, cwd=None, keyboard=""):
+    """Like run(), but yields an iterator over the output's lines as the
+    simulator prints them, for output too large to hold (CPU history)."""
+    simulator = _check_simulator(simulator)
+    with _script_files(script, machine, keyboard) as (path, keys), open(keys) as stdin:
+        proc = subprocess.Popen([str(simulator), str(path)], stdin=stdin,
+                                stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                text=True, cwd=cwd)
+        timer = threading.Timer(timeout, proc.kill)   # a guard, as in run()
+        timer.start()
+        try:
+            yield proc.stdout
+            for _ in proc.stdout:                     # the rest, unread by the caller
+                pass
+        finally:
+            timer.cancel()
+            if proc.poll() is None and not timer.finished.is_set():
+                proc.kill()
+            proc.stdout.close()
+            status = proc.wait()
+        if timer.finished.is_set() and status < 0:
+            raise SimhError(f"{simulator.name} did not finish within {timeout} s")
+        if status != 0:
+            raise SimhError(f"{simulator.name} exited with {status}")
 
 
 def deposit(address, words):

@@ -4,6 +4,7 @@ from pathlib import Path
 
 from harness import moves as mv
 from harness import plots
+from harness.commands.argtypes import positive
 from harness.plots import PlotError
 from harness.trace import AXES, TraceError, read
 
@@ -59,16 +60,6 @@ def offset(text):
     except ValueError:
         pass
     raise argparse.ArgumentTypeError(f"{text!r}: expected AXIS=CODES, e.g. Z=45")
-
-
-def positive(text):
-    try:
-        value = float(text)
-    except ValueError:
-        value = 0
-    if not value > 0:
-        raise argparse.ArgumentTypeError(f"{text!r}: expected a positive number")
-    return value
 
 
 def configure(parser):
