@@ -212,8 +212,10 @@ def save_all(figures):
                 os.chmod(tmp, 0o666 & ~_umask())     # as an ordinary new file
                 done.append((tmp, path))
                 svg = path.suffix == ".svg"
-                fig.savefig(tmp, format=path.suffix.lstrip("."), dpi=100,
-                            metadata={"Date": None} if svg else None)
+                # a fixed salt and no date: the same trace gives the same SVG
+                with matplotlib.rc_context({"svg.hashsalt": "robot-1983"}):
+                    fig.savefig(tmp, format=path.suffix.lstrip("."), dpi=100,
+                                metadata={"Date": None} if svg else None)
         for tmp, path in done:
             os.replace(tmp, path)
     finally:
