@@ -19,6 +19,7 @@ matplotlib.use("Agg")
 from matplotlib.figure import Figure  # noqa: E402  (after choosing the backend)
 
 from harness import moves as mv  # noqa: E402
+from harness.plot_errors import PlotError  # noqa: E402,F401  (raised here)
 from harness.trace import DAC_ZERO  # noqa: E402
 
 WIDTH = 6.4                       # inches per panel
@@ -27,10 +28,6 @@ STYLE = {"commanded": dict(color="tab:blue", lw=1.4, drawstyle="steps-post"),
          "held": dict(color="tab:green", lw=0, marker=".", ms=3),
          "zero": dict(color="tab:red", lw=1.0),
          "given": dict(color="black", lw=1.0, ls="--")}
-
-
-class PlotError(ValueError):
-    """What was asked cannot be drawn from this trace (no moves, bad window)."""
 
 
 def _window_text(start, end):

@@ -3,9 +3,8 @@ import argparse
 from pathlib import Path
 
 from harness import moves as mv
-from harness import plots
 from harness.commands.argtypes import positive
-from harness.plots import PlotError
+from harness.plot_errors import PlotError
 from harness.trace import AXES, TraceError, read
 
 NAME = "plot"
@@ -110,6 +109,7 @@ def _paths(stem, name, fmt):
 
 def build_figures(args):
     """[(figure, paths)] for what args ask; raises before anything is written."""
+    from harness import plots        # matplotlib: imported only when plotting
     trace = read(args.trace)
     stem = _stem(args)
     wanted = FIGURES if args.figure == "all" else (args.figure,)
@@ -145,6 +145,7 @@ def build_figures(args):
 
 
 def run(args):
+    from harness import plots
     figures = build_figures(args)
     try:
         plots.save_all(figures)
