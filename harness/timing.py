@@ -15,11 +15,12 @@ executed instruction's disassembly is checked against the word read).
 A *span* is one execution of the code being measured: it starts when the
 instruction at `entry` executes and ends with the RTI (or RTT) that returns from
 it (end="rti"), or with the instruction at a given address (end=address,
-included). A span entered by an interrupt or trap (the processor priority rose
-from the instruction before, which was not MTPS, RTI or RTT) is charged
+included). A span entered by an interrupt (the processor priority rose from the
+instruction before, which did not change the PSW itself) is charged
 kdf11.INTERRUPT_ENTRY for the entry sequence: an estimate, as DEC's tables give
-no figure (IOT's trap sequence). SOB is priced taken or not from its register
-(the history's src column: taken unless it was 1).
+no figure (IOT's trap sequence). A trap instruction (EMT, TRAP, IOT, BPT) is not
+an interrupt entry: its own price includes its trap sequence. SOB is priced
+taken or not from its register (the history's src column: taken unless it was 1).
 
     report = measure(setup_script, entry=0o1400, end="rti", instructions=300_000)
     print(report.format())
@@ -45,7 +46,9 @@ MEMORY_TOP = 0o157776           # last word below the I/O page (56 KB of RAM)
 _STOP = re.compile(r"^(.+), PC: ([0-7]+)")
 _EXAMINE = re.compile(r"^([0-7]+):\s+([0-7]+)\s*$")
 _HISTORY_HEADER = "PC     PSW     src    dst     IR"
-_RAISES_PRIORITY = ("MTPS", "RTI", "RTT")   # instructions that may raise it themselves
+# Instructions that change the PSW themselves: a priority rise after them is not an
+# interrupt entry (a trap instruction's price already includes its trap sequence).
+_OWN_PSW_CHANGE = ("MTPS", "RTI", "RTT", "EMT", "TRAP", "IOT", "BPT")
 
 
 class TimingError(RuntimeError):
@@ -209,7 +212,7 @@ def price_spans(history, words, entry, end="rti", report=None):
     span, depth, prev = None, 0, None
     for ex in history:
         interrupted = (prev is not None and (ex.psw & 0o340) > (prev.psw & 0o340)
-                       and prev.text.split()[0] not in _RAISES_PRIORITY)
+                       and prev.text.split()[0] not in _OWN_PSW_CHANGE)
         if span is None and ex.pc == entry:
             span = Span(ex.pc, interrupt_entry=interrupted)
             if interrupted:

@@ -117,3 +117,15 @@ def test_price_spans_detects_changed_code_and_counts_unfinished():
     assert report.total_us == pytest.approx(1.8 + 5.55)
     with pytest.raises(TimingError, match="the code changed"):
         price_spans(run, {0o1000: 0o005201, 0o1002: 0o000002}, 0o1000)   # INC R1 now
+
+
+def test_interrupt_entry_charged_after_a_priority_rise_not_after_a_trap():
+    words = {0o1000: 0o104400, 0o1014: 0o000777, 0o1400: 0o000002}   # TRAP 0, BR ., RTI
+    trapped = price_spans(history("001000 000000|               TRAP 0",
+                                  "001400 000340|               RTI"), words, 0o1400)
+    interrupted = price_spans(history("001014 000000|               BR 1014",
+                                      "001400 000340|               RTI"), words, 0o1400)
+    assert [s.interrupt_entry for s in trapped.spans] == [False]
+    assert trapped.total_us == pytest.approx(5.55)
+    assert [s.interrupt_entry for s in interrupted.spans] == [True]
+    assert interrupted.total_us == pytest.approx(5.55 + kdf11.INTERRUPT_ENTRY)
