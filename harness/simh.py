@@ -100,12 +100,14 @@ def stream(script, machine=True, simulator=PDP11, timeout=600, cwd=None, keyboar
             yield proc.stdout
             for _ in proc.stdout:                     # the rest, unread by the caller
                 pass
+            status = proc.wait()
+        except BaseException:
+            proc.kill()                               # the caller gave up: stop it
+            proc.wait()
+            raise
         finally:
             timer.cancel()
-            if proc.poll() is None and not timer.finished.is_set():
-                proc.kill()
             proc.stdout.close()
-            status = proc.wait()
         if timer.finished.is_set() and status < 0:
             raise SimhError(f"{simulator.name} did not finish within {timeout} s")
         if status != 0:

@@ -98,3 +98,16 @@ def test_short_segments_are_not_moves():
     assert mv.segments(s) == [(2, 3)]
     assert mv.find_moves(s, min_travel=50) == []
     assert len(mv.find_moves(s, min_travel=15)) == 1
+
+
+def test_no_ramp_puts_d1_on_the_first_tick(tmp_path):
+    """Like block 1006 as printed: the velocity jumps to MaxVel at once (the hand
+    servo with INC = MAXVEL), so D1 is where the move starts."""
+    from harness import simh
+    from servo_program import servo_program, trace_script
+    path = tmp_path / "jump.csv"
+    simh.run(trace_script(servo_program(inc=300, adapt_steps=0), path))
+    long_, _ = mv.long_and_short(mv.find_moves(trace.read(path).axis("X")))
+    x = trace.read(path).axis("X")
+    assert long_.peak_code == 300
+    assert long_.d1 == x.pos[long_.first] and long_.d1 - long_.d0 < 5

@@ -102,3 +102,10 @@ def test_save_failure_leaves_nothing(tr, tmp_path):
     with pytest.raises(ValueError):
         plots.save_all([(fig, [tmp_path / "ok.png", tmp_path / "bad.xyz"])])
     assert list(tmp_path.iterdir()) == []
+
+
+def test_same_figure_same_svg(tr, tmp_path):
+    """Built and saved twice, a figure gives the same bytes (fixed SVG ids, no date)."""
+    for name in ("a.svg", "b.svg"):
+        plots.save(plots.zero_figure(tr, "Y"), [tmp_path / name])
+    assert (tmp_path / "a.svg").read_bytes() == (tmp_path / "b.svg").read_bytes()
