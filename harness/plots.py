@@ -26,6 +26,7 @@ WIDTH = 6.4                       # inches per panel
 STYLE = {"commanded": dict(color="tab:blue", lw=1.4, drawstyle="steps-post"),
          "actual": dict(color="tab:orange", lw=1.4),
          "held": dict(color="tab:green", lw=0, marker=".", ms=3),
+         "dac": dict(color="lightgrey", lw=0.8, drawstyle="steps-post"),
          "zero": dict(color="tab:red", lw=1.0),
          "given": dict(color="black", lw=1.0, ls="--")}
 
@@ -156,6 +157,8 @@ def zero_figure(trace, axes=None, windows=(), offsets=None, kv=None, v_idle=mv.V
     for ax, s in zip(panels, rows):
         t, held = mv.held_codes(s, v_idle, hold)
         shown = [held]
+        # every row, faint: where the axis is not held the code leaves the plot's scale
+        ax.plot(s.time, s.dac, label="DAC code, every row", **STYLE["dac"])
         ax.plot(t, held, label="DAC code while held idle (0-Vel)", **STYLE["held"])
         axis_kv = kv if kv is not None else mv.estimate_kv(s)
         if axis_kv:
@@ -170,7 +173,7 @@ def zero_figure(trace, axes=None, windows=(), offsets=None, kv=None, v_idle=mv.V
         if not len(t):
             ax.text(0.5, 0.75, f"axis {s.axis} is never held idle here", ha="center",
                     transform=ax.transAxes)
-        values = [v for group in shown for v in group]
+        values = [v for group in shown for v in group] or list(s.dac)
         if values:
             ax.set_ylim(min(values) - 2, max(values) + 2)
         ax.set_xlim(s.time[0], s.time[-1])

@@ -89,6 +89,9 @@ def configure(parser):
     parser.add_argument("--v-idle", type=positive, default=mv.V_IDLE, metavar="C/S",
                         help=f"an axis is idle below this speed, commanded and actual "
                         f"(default {mv.V_IDLE:g} counts/s)")
+    parser.add_argument("--hold", type=positive, default=mv.HOLD, metavar="S",
+                        help="zero figure: an idle axis counts as held once its DAC "
+                        f"code has not changed for this long (default {mv.HOLD:g} s)")
     parser.add_argument("--min-travel", type=positive, default=mv.MIN_TRAVEL,
                         metavar="COUNTS", help="shortest motion counted as a move "
                         f"(default {mv.MIN_TRAVEL:g} counts)")
@@ -139,7 +142,7 @@ def build_figures(args):
                     _paths(stem, "time", args.format)))
     if "zero" in wanted:
         out.append((plots.zero_figure(trace, axes, args.window, dict(args.offset),
-                                      args.kv, args.v_idle),
+                                      args.kv, args.v_idle, args.hold),
                     _paths(stem, "zero", args.format)))
     return out
 

@@ -85,7 +85,9 @@ def test_zero_figure_held_codes_and_offsets(tr):
     assert list(given.get_ydata()) == [2051.0, 2051.0]
     assert any(label.startswith("plant's zero from the trace") for label in series)
     # y: one code only, so no Kv, no line from the trace, no offset given
-    assert set(lines_by_label(ax_y)) == {"DAC code while held idle (0-Vel)"}
+    assert set(lines_by_label(ax_y)) == {"DAC code while held idle (0-Vel)",
+                                         "DAC code, every row"}
+    np.testing.assert_array_equal(series["DAC code, every row"].get_ydata(), tr.axis("X").dac)
 
 
 def test_save_writes_valid_png_and_svg(tr, tmp_path):
