@@ -7,7 +7,7 @@ import pytest
 
 from harness.cli import main
 from harness.simh import ROOT
-from test_timing import counting_handler
+from timing_programs import counting_handler
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 

@@ -2,7 +2,7 @@
 disassembler (a wrong branch offset cannot pass unnoticed)."""
 from harness.pdp11prog import check_listing
 from servo_program import servo_program
-from test_timing import call_program, counting_handler
+from timing_programs import call_program, counting_handler
 
 
 def test_every_word_matches_simh_disassembly():
