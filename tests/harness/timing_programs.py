@@ -4,7 +4,6 @@ from harness.pdp11prog import Program
 from servo_program import LKS
 
 
-
 def counting_handler():
     """Clock interrupts on, spin; the handler at 1400 saves R0, counts, restores."""
     p = Program()
