@@ -14,8 +14,8 @@ executed instruction's disassembly is checked against the word read).
 
 A *span* is one execution of the code being measured: it starts when the
 instruction at `entry` executes and ends with the RTI (or RTT) that returns from
-it (end="rti"), or with the instruction at a given address (end=address,
-included). A span entered by an interrupt (the processor priority rose from the
+it (end="rti"), or with the first execution of the instruction at a given
+address (end=address, included). A span entered by an interrupt (the processor priority rose from the
 instruction before, which did not change the PSW itself) is charged
 kdf11.INTERRUPT_ENTRY for the entry sequence: an estimate, as DEC's tables give
 no figure (IOT's trap sequence). A trap instruction (EMT, TRAP, IOT, BPT) is not

@@ -15,8 +15,8 @@ Run build/pdp11 on SETUP (a SIMH script, run after pdp11-devices/machine.ini,
 that leaves the machine stopped where measuring starts: deposits and
 `deposit pc`, or a `break` and `go`), then step INSTRUCTIONS more instructions
 with SIMH's CPU history on, and price every execution of the code at --entry
-(or at the address held by --vector) through its RTI, or through the
-instruction at --end. Prints executions, microseconds per execution and per
+(or at the address held by --vector) through its RTI, or through the first
+execution of the instruction at --end. Prints executions, microseconds per execution and per
 60 Hz tick (with the tick's percentage), and a per-instruction breakdown.
 
 Times: DEC KDF11-B User's Guide tables B-4..B-7 (memory management off), as
@@ -51,8 +51,8 @@ def configure(parser):
     where.add_argument("--vector", type=octal, metavar="VEC",
                        help="octal interrupt vector whose handler is the code")
     parser.add_argument("--end", type=end_condition, default="rti", metavar="rti|ADDR",
-                        help="an execution ends with its RTI (default) or with the "
-                        "instruction at this octal address (included)")
+                        help="an execution ends with its RTI (default) or with the first "
+                        "execution of the instruction at this octal address")
     parser.add_argument("--instructions", type=count, default=300_000, metavar="N",
                         help="instructions to run after SETUP (default 300000: one "
                         "simulated second at the default RATE)")

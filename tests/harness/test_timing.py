@@ -3,6 +3,7 @@ whose cost is worked out here by hand from shared/kdf11-timing.md (MMU off)."""
 import pytest
 
 from harness import kdf11, timing
+from harness.pdp11prog import Program
 from harness.timing import TimingError, parse_history_line, price_spans
 from servo_program import servo_program
 from timing_programs import CALL_US, HANDLER_US, call_program, counting_handler
@@ -50,6 +51,19 @@ def test_servo_hold_path_priced_by_hand():
     nine = [s.microseconds for s in report.spans if s.instructions == 9]
     assert nine and nine == pytest.approx([hold] * len(nine))
     assert min(s.microseconds for s in report.spans) == pytest.approx(hold)
+
+
+def test_a_run_that_halts_is_reported_and_stops_there():
+    p = Program()
+    p.mov_imm_reg(5, 0).sob_self(0).halt()
+    # chunks of 100: the later steps run on past the HALT; their history is ignored
+    report = timing.measure(p.script(start=False), entry=0o1000, end=0o1004,
+                            instructions=1000, chunk=100)
+    assert report.stopped == "HALT instruction at PC 001010"
+    assert report.total_us == pytest.approx(3.0 + 2.7)       # MOV, the first SOB
+    with pytest.raises(TimingError, match="the run stopped: HALT instruction"):
+        timing.measure(p.script(start=False), entry=0o1000, end=0o1010,
+                       instructions=1000, chunk=100)
 
 
 def test_measure_errors():
