@@ -105,3 +105,15 @@ def test_timing_bad_input(tmp_path, capsys, args, status, message):
         got = exit_.code
     out, err = capsys.readouterr()
     assert got == status and message in err and out == ""
+
+
+def test_plot_a_trace_of_dac_writes_only(tmp_path, capsys):
+    """SET PLANT SAMPLE=0: rows only at DAC writes, here x's alone."""
+    from harness import simh
+    from servo_program import servo_program, trace_script
+    path = tmp_path / "writes.csv"
+    simh.run(trace_script(servo_program(), path, extra="set plant sample=0\n"))
+    assert main(["plot", str(path), "--figure", "time", "--format", "png"]) == 0
+    assert capsys.readouterr().out.split() == [str(tmp_path / "writes-time.png")]
+    assert main(["plot", str(path), "--axis", "Y"]) == 1
+    assert "no rows for axis Y (the trace has X)" in capsys.readouterr().err
