@@ -1,0 +1,100 @@
+"""The host assembler (forth/asm.fs under gforth) against two independent references.
+
+Corpus: tests/asm/corpus.txt (generated, every instruction x every mode it takes)
+and tests/asm/handwritten.txt (DESIGN.md's examples and the appendix's lines,
+by hand). Each unit pairs FORTH text with MACRO-11 text and must give the same
+words from (a) pdpy11 on the MACRO-11 text and (c) the host assembler on the
+FORTH text, and (b) SIMH's disassembler must read the host's words back as the
+MACRO-11 text."""
+import re
+from pathlib import Path
+
+import pytest
+
+from harness.asmcheck import corpus, gen_corpus, host_asm, pdpy11_ref, simh_disasm
+
+HERE = Path(__file__).resolve().parent
+ASM = HERE.parent.parent / "forth" / "asm.fs"
+CORPUS_FILES = [HERE / "corpus.txt", HERE / "handwritten.txt"]
+
+
+def octal(words):
+    return " ".join(f"{w:06o}" for w in words)
+
+
+def report(bad, what):
+    lines = [f"{len(bad)} unit(s) where {what}:"] + bad[:30]
+    return "\n".join(lines)
+
+
+@pytest.fixture(scope="module")
+def units():
+    return [u for path in CORPUS_FILES for u in corpus.read(path)]
+
+
+@pytest.fixture(scope="module")
+def host(units):
+    return host_asm.assemble([u.forth for u in units])
+
+
+def test_generated_corpus_is_current(capsys):
+    gen_corpus.main()
+    assert capsys.readouterr().out == (HERE / "corpus.txt").read_text(), \
+        "regenerate: python -m harness.asmcheck.gen_corpus > tests/asm/corpus.txt"
+
+
+def test_corpus_covers_every_instruction(units):
+    """Every instruction and structure word asm.fs defines appears in the corpus."""
+    source = ASM.read_text()
+    defined = set(re.findall(r"\b(?:2OPR?|1OPR?|0OP|EIS|BRANCH)\s+([A-Z]\S*,)", source))
+    defined |= {w for w in re.findall(r"^: (\S+,)", source, re.M) if not w.startswith("ASM-")}
+    used = {t for u in units for t in u.forth.split()}
+    assert len(defined) > 90
+    assert defined - used == set()
+
+
+def test_host_assembles_every_unit(units, host):
+    bad = [f"{u.source}: {u.forth!r}: {r.error}" for u, r in zip(units, host) if r.error]
+    assert not bad, report(bad, "the host assembler refused good input")
+
+
+def test_pdpy11_agrees_with_host(units, host):
+    bad = []
+    for u, r in zip(units, host):
+        try:
+            ref = pdpy11_ref.assemble(u.macro)
+        except pdpy11_ref.ReferenceError as e:
+            bad.append(f"{u.source}: {e}")
+            continue
+        if list(r.words) != ref:
+            bad.append(f"{u.source}: {u.forth!r} -> {octal(r.words)}; "
+                       f"pdpy11 {' ; '.join(u.macro)!r} -> {octal(ref)}")
+    assert not bad, report(bad, "pdpy11 and the host assembler differ")
+
+
+def test_simh_disassembles_host_words_as_macro_text(units, host):
+    listing = simh_disasm.disassemble([r.words for r in host])
+    bad = []
+    for u, r, got in zip(units, host, listing):
+        expected = [simh_disasm.normalise(s) for s in u.macro]
+        if got != expected:
+            bad.append(f"{u.source}: {u.forth!r} -> {octal(r.words)}: SIMH {got}, "
+                       f"corpus {expected}")
+    assert not bad, report(bad, "SIMH reads the host's words differently")
+
+
+def test_bad_input_aborts_with_message_and_emits_nothing():
+    units = corpus.read(HERE / "errors.txt")
+    results = host_asm.assemble([u.forth for u in units])
+    bad = [f"{u.source}: {u.forth!r}: got {r.error or octal(r.words)!r} after "
+           f"{r.emitted} word(s), want {u.error!r} after {u.emitted}"
+           for u, r in zip(units, results)
+           if not r.error.startswith(u.error) or r.emitted != u.emitted]
+    assert len(units) > 40
+    assert not bad, report(bad, "bad input was not refused as expected")
+
+
+def test_after_an_error_the_next_instruction_is_clean():
+    """An error resets the operand slots: the following unit is not disturbed."""
+    results = host_asm.assemble(["5 # R0 MOV,", "R0 CLR,", "R0 R1 R2 MOV,", "R1 R2 ADD,"])
+    assert [r.words for r in results] == [(), (0o005000,), (), (0o060201,)]
