@@ -33,6 +33,14 @@ def octal(n):
     return f"{n:o}O"
 
 
+def here(delta):
+    """A branch target as FORTH text relative to AHERE, so that a unit gives the
+    same words wherever it is assembled (on the target, at HERE)."""
+    if delta == 0:
+        return "AHERE"
+    return f"AHERE {octal(abs(delta))} {'+' if delta > 0 else '-'}"
+
+
 def operands(r, base):
     """The twelve ways of addressing, on register r (0-5), numbers from base."""
     R = f"R{r}"
@@ -143,9 +151,9 @@ def units():
         yield f"R1 R{r} XOR,", f"XOR {MACRO_REG[r]},R1"
     yield "SOB: addr reg SOB, (0 to 63 words back)", None
     for r in range(8):
-        yield f"1002O R{r} SOB,", f"SOB {MACRO_REG[r]},1002"
-    yield "1000O R3 SOB,", "SOB R3,1000"
-    yield "604O R4 SOB,", "SOB R4,604"
+        yield f"{here(2)} R{r} SOB,", f"SOB {MACRO_REG[r]},1002"
+    yield f"{here(0)} R3 SOB,", "SOB R3,1000"
+    yield f"{here(-0o174)} R4 SOB,", "SOB R4,604"
     yield "no operand, numbers", None
     for name in NO_OPERAND:
         yield f"{name},", name
@@ -155,7 +163,7 @@ def units():
     yield "branches to an address: addr Bxx, (offsets 0, -1, 127, -128)", None
     for name in BRANCHES:
         for target in (0o1002, 0o1000, 0o1400, 0o402):
-            yield f"{octal(target)} {name},", f"{name} {target:o}"
+            yield f"{here(target - ORIGIN)} {name},", f"{name} {target:o}"
     yield "structured control with every condition", None
     for cond, (taken, fails) in CONDITIONS.items():
         yield f"{cond} IF, R0 INC, THEN,", f"{fails} 1004 ; INC R0"

@@ -4,7 +4,7 @@ import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
-from .corpus import forth_for_host
+from .corpus import ORIGIN, forth_for_host
 
 ROOT = Path(__file__).resolve().parents[2]
 DRIVER = ROOT / "tests" / "asm" / "host-driver.fs"
@@ -17,9 +17,9 @@ class Result:
     emitted: int = 0  # words emitted before an error (must be 0: nothing half-done)
 
 
-def assemble(forth_texts, timeout=60):
-    """Assemble each FORTH text as one unit at ORIGIN; one gforth run for all."""
-    lines = []
+def assemble(forth_texts, origin=ORIGIN, timeout=60):
+    """Assemble each FORTH text as one unit at origin; one gforth run for all."""
+    lines = [f"{origin} origin !"]
     for text in forth_texts:
         host = forth_for_host(text)
         if '"' in host:

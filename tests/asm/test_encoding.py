@@ -46,7 +46,7 @@ def test_generated_corpus_is_current(capsys):
 def test_corpus_covers_every_instruction(units):
     """Every instruction and structure word asm.fs defines appears in the corpus."""
     source = ASM.read_text()
-    defined = set(re.findall(r"\b(?:2OPR?|1OPR?|0OP|EIS|BRANCH)\s+([A-Z]\S*,)", source))
+    defined = set(re.findall(r"\b(?:ASM-2OPR?|ASM-1OPR?|ASM-0OP|ASM-EIS-OP|ASM-BR)\s+([A-Z]\S*,)", source))
     defined |= {w for w in re.findall(r"^: (\S+,)", source, re.M) if not w.startswith("ASM-")}
     used = {t for u in units for t in u.forth.split()}
     assert len(defined) > 90
@@ -81,6 +81,15 @@ def test_simh_disassembles_host_words_as_macro_text(units, host):
             bad.append(f"{u.source}: {u.forth!r} -> {octal(r.words)}: SIMH {got}, "
                        f"corpus {expected}")
     assert not bad, report(bad, "SIMH reads the host's words differently")
+
+
+def test_units_give_the_same_words_anywhere(units, host):
+    """Branch targets are written relative to AHERE, so the resident assembler can
+    assemble the corpus at HERE and be compared with the same words."""
+    elsewhere = host_asm.assemble([u.forth for u in units], origin=0o40000)
+    bad = [f"{u.source}: {u.forth!r}: {octal(a.words)} at 001000, {octal(b.words)} "
+           f"at 040000" for u, a, b in zip(units, host, elsewhere) if a != b]
+    assert not bad, report(bad, "the words depend on where the unit is assembled")
 
 
 def test_bad_input_aborts_with_message_and_emits_nothing():
