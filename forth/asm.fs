@@ -200,7 +200,8 @@ VARIABLE ASM-DEPTH                ( stack depth at ASM-START )
 -5711 CONSTANT ASM-IF-TAG       -5712 CONSTANT ASM-BEGIN-TAG
 : ASM-?COND ( cond -- cond ) ( one of the 14 conditional branches )
   DEPTH 1 < ASM-ERR? ABORT" : condition expected (EQ NE MI PL ...)"
-  DUP 30975 AND OVER 34560 AND 512 < OR ASM-ERR?   ( 074377 103400 )
+  DUP 30975 AND  OVER 34560 AND DUP 0= SWAP 256 = OR  OR ( 074377 103400 )
+  ASM-ERR?
   ABORT" : condition expected (EQ NE MI PL ...)" ;
 : ASM-UNPAIRED ( x tag expected -- x tag flag )
   DEPTH 3 < IF DROP -1 ELSE OVER <> THEN ;

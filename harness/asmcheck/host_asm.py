@@ -1,4 +1,11 @@
-"""The host assembler: forth/asm.fs under gforth, through tests/asm/host-driver.fs."""
+"""The host assembler: forth/asm.fs under gforth (tests/asm/host-*.fs).
+
+Two ways to run it: as the metacompiler does (64-bit gforth cells), and with
+16-bit cell arithmetic (tests/asm/sixteen.fs plus a copy of asm.fs whose
+literals are 16-bit), which is how the PDP-11 will run the same source as the
+resident ASSEMBLER."""
+import re
+import shutil
 import subprocess
 import tempfile
 from dataclasses import dataclass
@@ -7,17 +14,30 @@ from pathlib import Path
 from .corpus import ORIGIN, forth_for_host
 
 ROOT = Path(__file__).resolve().parents[2]
-DRIVER = ROOT / "tests" / "asm" / "host-driver.fs"
+FORTH = ROOT / "forth"
+TESTS = ROOT / "tests" / "asm"
+INTEGER = re.compile(r"(?<!\S)(-?\d+)(?!\S)")
 
 
 @dataclass(frozen=True)
 class Result:
-    words: tuple      # words assembled at ORIGIN, empty after an error
+    words: tuple      # words assembled at the origin, empty after an error
     error: str = ""   # the abort message, empty when the unit assembled
-    emitted: int = 0  # words emitted before an error (must be 0: nothing half-done)
+    emitted: int = 0  # words emitted before an error (of earlier instructions)
 
 
-def assemble(forth_texts, origin=ORIGIN, timeout=60):
+def sixteen_bit_copy(directory):
+    """asm.fs and its loader in directory, every literal as the PDP-11 holds it."""
+    def narrow(m):
+        n = int(m.group(1)) & 0xFFFF
+        return str(n - 0x10000 if n > 0x7FFF else n)
+    text = (FORTH / "asm.fs").read_text()
+    (Path(directory) / "asm.fs").write_text(INTEGER.sub(narrow, text))
+    shutil.copy(FORTH / "asm-host.fs", directory)
+    return Path(directory) / "asm-host.fs"
+
+
+def assemble(forth_texts, origin=ORIGIN, sixteen=False, timeout=60):
     """Assemble each FORTH text as one unit at origin; one gforth run for all."""
     lines = [f"{origin} origin !"]
     for text in forth_texts:
@@ -25,17 +45,19 @@ def assemble(forth_texts, origin=ORIGIN, timeout=60):
         if '"' in host:
             raise ValueError(f"a unit cannot contain a double quote: {text!r}")
         lines.append(f's" {host}" unit')
-    with tempfile.NamedTemporaryFile("w", suffix=".fs", delete=False) as f:
-        f.write("\n".join(lines) + "\nbye\n")
-        script = f.name
-    try:
-        proc = subprocess.run(["gforth", str(DRIVER), script], capture_output=True,
-                              text=True, timeout=timeout, cwd=DRIVER.parent)
-    finally:
-        Path(script).unlink()
+    with tempfile.TemporaryDirectory() as tmp:
+        script = Path(tmp) / "units.fs"
+        script.write_text("\n".join(lines) + "\nbye\n")
+        if sixteen:
+            loader = [str(TESTS / "sixteen.fs"), str(sixteen_bit_copy(tmp)), "-e", "previous"]
+        else:
+            loader = [str(FORTH / "asm-host.fs")]
+        command = ["gforth", str(TESTS / "host-image.fs"), *loader,
+                   str(TESTS / "host-units.fs"), str(script)]
+        proc = subprocess.run(command, capture_output=True, text=True, timeout=timeout)
     out = [l for l in proc.stdout.splitlines() if l.startswith(("ok", "error"))]
     if proc.returncode or len(out) != len(forth_texts):
-        raise RuntimeError(f"gforth host driver failed (rc {proc.returncode}):\n"
+        raise RuntimeError(f"gforth host assembler failed (rc {proc.returncode}):\n"
                            f"{proc.stdout[-2000:]}\n{proc.stderr[-2000:]}")
     results = []
     for line in out:

@@ -92,9 +92,20 @@ def test_units_give_the_same_words_anywhere(units, host):
     assert not bad, report(bad, "the words depend on where the unit is assembled")
 
 
-def test_bad_input_aborts_with_message_and_emits_nothing():
+def test_sixteen_bit_cells_give_the_same_words(units, host):
+    """As the resident ASSEMBLER will run it: 16-bit cells, high addresses."""
+    target = host_asm.assemble([u.forth for u in units], origin=0o120000, sixteen=True)
+    bad = [f"{u.source}: {u.forth!r}: {octal(a.words)} with host cells, "
+           f"{octal(b.words) or b.error} with 16-bit cells"
+           for u, a, b in zip(units, host, target) if a != b]
+    assert not bad, report(bad, "16-bit cells change the result")
+
+
+@pytest.mark.parametrize("sixteen", [False, True], ids=["host-cells", "16-bit-cells"])
+def test_bad_input_aborts_with_message_and_emits_nothing(sixteen):
     units = corpus.read(HERE / "errors.txt")
-    results = host_asm.assemble([u.forth for u in units])
+    results = host_asm.assemble([u.forth for u in units], origin=0o120000 if sixteen
+                                else corpus.ORIGIN, sixteen=sixteen)
     bad = [f"{u.source}: {u.forth!r}: got {r.error or octal(r.words)!r} after "
            f"{r.emitted} word(s), want {u.error!r} after {u.emitted}"
            for u, r in zip(units, results)
