@@ -22,14 +22,14 @@ VARIABLE ASM-DEPTH                ( stack depth at ASM-START )
 : ASM-LAST ( a1 a2 -- a ) ASM-#OPS @ 2 = IF SWAP THEN DROP ;
 
 : ASM-OP! ( x field -- ) ( record a new operand )
-  ASM-#OPS @ 2 = ASM-ERR? ABORT" : more than two operands"
+  ASM-#OPS @ 2 = ASM-ERR? ABORT" more than two operands"
   1 ASM-#OPS +!  ASM-OP1 ASM-OP2 ASM-LAST !
   ASM-X1 ASM-X2 ASM-LAST !  DEPTH ASM-D1 ASM-D2 ASM-LAST ! ;
 
 : ASM-BARE ( -- reg ) ( the latest operand, a plain register )
-  ASM-#OPS @ 0= ASM-ERR? ABORT" : mode word without a register"
+  ASM-#OPS @ 0= ASM-ERR? ABORT" mode word without a register"
   ASM-OP1 ASM-OP2 ASM-LAST @ DUP 7 > ASM-ERR?
-  ABORT" : mode word after a mode word" ;
+  ABORT" mode word after a mode word" ;
 
 ( Registers: each records itself as a mode-0 operand. )
 : ASM-REG ( n "name" -- ) CREATE , DOES> ( -- ) @ 0 SWAP ASM-OP! ;
@@ -51,33 +51,33 @@ VARIABLE ASM-DEPTH                ( stack depth at ASM-START )
 : ASM-INDEX ( mode "name" -- ) CREATE ,
   DOES> ( x -- ) @ 8 * ASM-BARE + 64 +  ( x field )
   DEPTH 1- DUP ASM-D1 ASM-D2 ASM-LAST @ = SWAP 0> AND 0=
-  ASM-ERR? ABORT" : index must come just before the register"
+  ASM-ERR? ABORT" index must come just before the register"
   ASM-OP1 ASM-OP2 ASM-LAST !  ASM-X1 ASM-X2 ASM-LAST !
   DEPTH ASM-D1 ASM-D2 ASM-LAST ! ;
 6 ASM-INDEX I)   ( mode 6: indexed               )
 7 ASM-INDEX @I)  ( mode 7: index deferred        )
 
 : # ( n -- ) ( immediate operand: mode 2 on PC, n follows )
-  DEPTH 1 < ASM-ERR? ABORT" : # needs a number" 87 ASM-OP! ;
+  DEPTH 1 < ASM-ERR? ABORT" # needs a number" 87 ASM-OP! ;
 : @# ( a -- ) ( absolute operand: mode 3 on PC, a follows )
-  DEPTH 1 < ASM-ERR? ABORT" : @# needs an address" 95 ASM-OP! ;
+  DEPTH 1 < ASM-ERR? ABORT" @# needs an address" 95 ASM-OP! ;
 
 ( Checks done before anything is emitted. )
 : ASM-OPERANDS ( x n -- x ) ( exactly n operands, none left behind )
-  ASM-#OPS @ <> ASM-ERR? ABORT" : wrong number of operands"
+  ASM-#OPS @ <> ASM-ERR? ABORT" wrong number of operands"
   DEPTH 1-
   ASM-#OPS @ 0> IF DUP ASM-D1 @ <> ASM-ERR?
-    ABORT" : a number where an operand is expected" THEN
+    ABORT" a number where an operand is expected" THEN
   ASM-#OPS @ 1 > IF DUP ASM-D2 @ <> ASM-ERR?
-    ABORT" : a number where an operand is expected" THEN DROP ;
+    ABORT" a number where an operand is expected" THEN DROP ;
 : ASM-F ( slot -- field ) @ 63 AND ;
 : ASM-?WRITE ( slot -- ) ( an immediate cannot be written )
-  @ 87 = ASM-ERR? ABORT" : immediate operand as destination" ;
+  @ 87 = ASM-ERR? ABORT" immediate operand as destination" ;
 : ASM-?REG ( slot -- ) ( register only )
-  @ 7 > ASM-ERR? ABORT" : register operand expected" ;
+  @ 7 > ASM-ERR? ABORT" register operand expected" ;
 : ASM-?MEM ( slot -- ) ( not a register, not an immediate )
   DUP @ 8 < SWAP @ 87 = OR ASM-ERR?
-  ABORT" : memory operand expected" ;
+  ABORT" memory operand expected" ;
 
 ( Emitting: opcode word, then source extra, then destination extra. )
 : ASM-X, ( slot xvar -- ) SWAP @ 64 AND IF @ A, ELSE DROP THEN ;
@@ -139,15 +139,15 @@ VARIABLE ASM-DEPTH                ( stack depth at ASM-START )
 29696 ASM-EIS-OP ASH,  30208 ASM-EIS-OP ASHC,  ( 072000 073000 )
 : DIV, ( -- ) ( the quotient/remainder pair needs an even register )
   29184 2 ASM-OPERANDS ASM-OP1 ASM-?REG            ( 071000 )
-  ASM-OP1 @ 1 AND ASM-ERR? ABORT" : DIV, needs an even register"
+  ASM-OP1 @ 1 AND ASM-ERR? ABORT" DIV, needs an even register"
   ASM-EIS ;
 : XOR, ( -- ) ( dst reg XOR, = XOR reg,dst )
   30720 2 ASM-OPERANDS ASM-OP2 ASM-?REG ASM-OP1 ASM-?WRITE  ( 074000 )
   ASM-DOUBLE ;
 : SOB, ( addr -- ) ( addr reg SOB, : back to addr, 0..63 words )
   32256 1 ASM-OPERANDS ASM-OP1 ASM-?REG ASM-OP1 ASM-F 64 * OR ( 077000 )
-  SWAP AHERE 2 + SWAP - DUP 1 AND ASM-ERR? ABORT" : odd SOB, target"
-  2/ DUP 0 < OVER 63 > OR ASM-ERR? ABORT" : SOB, target out of range"
+  SWAP AHERE 2 + SWAP - DUP 1 AND ASM-ERR? ABORT" odd SOB, target"
+  2/ DUP 0 < OVER 63 > OR ASM-ERR? ABORT" SOB, target out of range"
   OR A, ASM-RESET ;
 
 ( Operand-less instructions and those with a number field. )
@@ -161,7 +161,7 @@ VARIABLE ASM-DEPTH                ( stack depth at ASM-START )
 180 ASM-0OP SEZ,  184 ASM-0OP SEN,  191 ASM-0OP SCC,
                    ( 000264 000270 000277 )
 : ASM-NUM, ( n max op -- ) ( op with n in its low bits, 0..max )
-  >R OVER < OVER 0 < OR ASM-ERR? ABORT" : number out of range"
+  >R OVER < OVER 0 < OR ASM-ERR? ABORT" number out of range"
   R> 0 ASM-OPERANDS OR A, ;
 : EMT, ( n -- ) 255 34816 ASM-NUM, ;   ( 104000 )
 : TRAP, ( n -- ) 255 35072 ASM-NUM, ;  ( 104400 )
@@ -179,9 +179,9 @@ VARIABLE ASM-DEPTH                ( stack depth at ASM-START )
 
 ( Branch offsets: words from the word after the branch, -128..127. )
 : ASM-OFFSET ( target from -- off ) ( from = address of the branch )
-  OVER 1 AND ASM-ERR? ABORT" : odd branch target"
+  OVER 1 AND ASM-ERR? ABORT" odd branch target"
   2 + - 2/ DUP -128 < OVER 127 > OR ASM-ERR?
-  ABORT" : branch out of range" 255 AND ;
+  ABORT" branch out of range" 255 AND ;
 : ASM-BRANCH, ( addr op -- ) ( emit op branching to addr )
   0 ASM-OPERANDS SWAP AHERE ASM-OFFSET OR A, ;
 : ASM-BR ( op "name" -- ) CREATE , DOES> ( addr -- ) @ ASM-BRANCH, ;
@@ -199,10 +199,10 @@ VARIABLE ASM-DEPTH                ( stack depth at ASM-START )
 ( without IF, or an UNTIL, without BEGIN, is caught.             )
 -5711 CONSTANT ASM-IF-TAG       -5712 CONSTANT ASM-BEGIN-TAG
 : ASM-?COND ( cond -- cond ) ( one of the 14 conditional branches )
-  DEPTH 1 < ASM-ERR? ABORT" : condition expected (EQ NE MI PL ...)"
+  DEPTH 1 < ASM-ERR? ABORT" condition expected (EQ NE MI PL ...)"
   DUP 30975 AND  OVER 34560 AND DUP 0= SWAP 256 = OR  OR ( 074377 103400 )
   ASM-ERR?
-  ABORT" : condition expected (EQ NE MI PL ...)" ;
+  ABORT" condition expected (EQ NE MI PL ...)" ;
 : ASM-UNPAIRED ( x tag expected -- x tag flag )
   DEPTH 3 < IF DROP -1 ELSE OVER <> THEN ;
 : ASM-PATCH ( target b -- ) ( resolve the forward branch at b )
@@ -211,27 +211,27 @@ VARIABLE ASM-DEPTH                ( stack depth at ASM-START )
 : IF, ( cond -- b tag ) ( branch over when the condition fails )
   ASM-?COND 0 ASM-OPERANDS 256 XOR AHERE SWAP A, ASM-IF-TAG ;
 : THEN, ( b tag -- )
-  ASM-IF-TAG ASM-UNPAIRED ASM-ERR? ABORT" : THEN, without IF,"
+  ASM-IF-TAG ASM-UNPAIRED ASM-ERR? ABORT" THEN, without IF,"
   DROP 0 ASM-OPERANDS AHERE SWAP ASM-PATCH ;
 : ELSE, ( b tag -- b2 tag )
-  ASM-IF-TAG ASM-UNPAIRED ASM-ERR? ABORT" : ELSE, without IF,"
+  ASM-IF-TAG ASM-UNPAIRED ASM-ERR? ABORT" ELSE, without IF,"
   DROP 0 ASM-OPERANDS  AHERE 2 + OVER ASM-OFFSET DROP ( in range? )
   AHERE 256 A, ( b b2 ) SWAP AHERE SWAP ASM-PATCH ASM-IF-TAG ;
 : BEGIN, ( -- b tag ) AHERE 0 ASM-OPERANDS ASM-BEGIN-TAG ;
 : UNTIL, ( b tag cond -- ) ( loop back while the condition fails )
   ASM-?COND >R ASM-BEGIN-TAG ASM-UNPAIRED R> SWAP ASM-ERR?
-  ABORT" : UNTIL, without BEGIN," SWAP DROP 256 XOR ASM-BRANCH, ;
+  ABORT" UNTIL, without BEGIN," SWAP DROP 256 XOR ASM-BRANCH, ;
 : END, ( b tag cond -- ) UNTIL, ;
 : AGAIN, ( b tag -- )
-  ASM-BEGIN-TAG ASM-UNPAIRED ASM-ERR? ABORT" : AGAIN, without BEGIN,"
+  ASM-BEGIN-TAG ASM-UNPAIRED ASM-ERR? ABORT" AGAIN, without BEGIN,"
   DROP 256 ASM-BRANCH, ;
 : WHILE, ( b tag cond -- b tag b2 tag2 )
   ASM-?COND >R ASM-BEGIN-TAG ASM-UNPAIRED R> SWAP ASM-ERR?
-  ABORT" : WHILE, without BEGIN," IF, ;
+  ABORT" WHILE, without BEGIN," IF, ;
 : REPEAT, ( b tag b2 tag2 -- )
-  ASM-IF-TAG ASM-UNPAIRED ASM-ERR? ABORT" : REPEAT, without WHILE,"
+  ASM-IF-TAG ASM-UNPAIRED ASM-ERR? ABORT" REPEAT, without WHILE,"
   DROP >R ASM-BEGIN-TAG ASM-UNPAIRED ASM-ERR?
-  ABORT" : REPEAT, without BEGIN," DROP R>   ( b b2 )
+  ABORT" REPEAT, without BEGIN," DROP R>   ( b b2 )
   AHERE 2 + OVER ASM-OFFSET DROP ( forward part in range? )
   SWAP 256 ASM-BRANCH,  AHERE SWAP ASM-PATCH ;
 
@@ -240,6 +240,6 @@ VARIABLE ASM-DEPTH                ( stack depth at ASM-START )
 ( CODE and END-CODE of the includer call these around a body. )
 : ASM-START ( -- ) ASM-RESET DEPTH ASM-DEPTH ! ;
 : ASM-END ( -- ) ( nothing pending, every structure closed )
-  ASM-#OPS @ ASM-ERR? ABORT" : operand without an instruction"
+  ASM-#OPS @ ASM-ERR? ABORT" operand without an instruction"
   DEPTH ASM-DEPTH @ <> ASM-ERR?
-  ABORT" : unbalanced structure or stray number in CODE" ;
+  ABORT" unbalanced structure or stray number in CODE" ;
