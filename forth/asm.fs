@@ -12,6 +12,7 @@
 ( remembers the stack depth it was made at, so a stray number    )
 ( between operands is caught.  Slot field: mode*8+reg, +64 when  )
 ( the operand carries an extra word: index, immediate, address.   )
+( Each VARIABLE: -- addr. )
 VARIABLE ASM-#OPS                 ( operands recorded: 0, 1, 2 )
 VARIABLE ASM-OP1  VARIABLE ASM-X1  VARIABLE ASM-D1  ( first )
 VARIABLE ASM-OP2  VARIABLE ASM-X2  VARIABLE ASM-D2  ( second )
@@ -167,7 +168,7 @@ VARIABLE ASM-DEPTH                ( stack depth at ASM-START )
 : TRAP, ( n -- ) 255 35072 ASM-NUM, ;  ( 104400 )
 : MARK, ( n -- ) 63 3328 ASM-NUM, ;    ( 006400 )
 
-( Conditions: the branch opcode taken when the condition holds. )
+( Conditions, each -- cond: the branch opcode taken when it holds. )
   768 CONSTANT EQ    512 CONSTANT NE    ( 001400 001000 )
 33024 CONSTANT MI  32768 CONSTANT PL    ( 100400 100000 )
 34560 CONSTANT CS  34304 CONSTANT CC    ( 103400 103000 )
@@ -197,7 +198,8 @@ VARIABLE ASM-DEPTH                ( stack depth at ASM-START )
 
 ( Structured control.  Stack entries carry a tag so that a THEN, )
 ( without IF, or an UNTIL, without BEGIN, is caught.             )
--5711 CONSTANT ASM-IF-TAG       -5712 CONSTANT ASM-BEGIN-TAG
+-5711 CONSTANT ASM-IF-TAG       ( -- tag )
+-5712 CONSTANT ASM-BEGIN-TAG    ( -- tag )
 : ASM-?COND ( cond -- cond ) ( one of the 14 conditional branches )
   DEPTH 1 < ASM-ERR? ABORT" condition expected (EQ NE MI PL ...)"
   DUP 30975 AND  OVER 34560 AND DUP 0= SWAP 256 = OR  OR ( 074377 103400 )

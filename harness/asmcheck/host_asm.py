@@ -54,7 +54,8 @@ def assemble(forth_texts, origin=ORIGIN, sixteen=False, timeout=60):
             loader = [str(FORTH / "asm-host.fs")]
         command = ["gforth", str(TESTS / "host-image.fs"), *loader,
                    str(TESTS / "host-units.fs"), str(script)]
-        proc = subprocess.run(command, capture_output=True, text=True, timeout=timeout)
+        proc = subprocess.run(command, capture_output=True, text=True, timeout=timeout,
+                              stdin=subprocess.DEVNULL)
     out = [l for l in proc.stdout.splitlines() if l.startswith(("ok", "error"))]
     if proc.returncode or len(out) != len(forth_texts):
         raise RuntimeError(f"gforth host assembler failed (rc {proc.returncode}):\n"
