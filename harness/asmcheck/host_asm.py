@@ -37,6 +37,32 @@ def sixteen_bit_copy(directory):
     return Path(directory) / "asm-host.fs"
 
 
+def gforth(loader, script, timeout=60):
+    """Run gforth on the host image, the loader files and then the script text
+    (which must end with bye); its standard output."""
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp) / "script.fs"
+        path.write_text(script)
+        command = ["gforth", str(TESTS / "host-image.fs"), *loader(tmp),
+                   str(TESTS / "host-units.fs"), str(path)]
+        proc = subprocess.run(command, capture_output=True, text=True, timeout=timeout,
+                              stdin=subprocess.DEVNULL)
+    if proc.returncode:
+        raise RuntimeError(f"gforth host assembler failed (rc {proc.returncode}):\n"
+                           f"{proc.stdout[-2000:]}\n{proc.stderr[-2000:]}")
+    return proc.stdout
+
+
+def host_loader(tmp):
+    """Loader files for the assembler with gforth's own cells."""
+    return [str(FORTH / "asm-host.fs")]
+
+
+def sixteen_loader(tmp):
+    """Loader files for the assembler with 16-bit cell arithmetic."""
+    return [str(TESTS / "sixteen.fs"), str(sixteen_bit_copy(tmp)), "-e", "previous"]
+
+
 def assemble(forth_texts, origin=ORIGIN, sixteen=False, timeout=60):
     """Assemble each FORTH text as one unit at origin; one gforth run for all."""
     lines = [f"{origin} origin !"]
@@ -45,21 +71,12 @@ def assemble(forth_texts, origin=ORIGIN, sixteen=False, timeout=60):
         if '"' in host:
             raise ValueError(f"a unit cannot contain a double quote: {text!r}")
         lines.append(f's" {host}" unit')
-    with tempfile.TemporaryDirectory() as tmp:
-        script = Path(tmp) / "units.fs"
-        script.write_text("\n".join(lines) + "\nbye\n")
-        if sixteen:
-            loader = [str(TESTS / "sixteen.fs"), str(sixteen_bit_copy(tmp)), "-e", "previous"]
-        else:
-            loader = [str(FORTH / "asm-host.fs")]
-        command = ["gforth", str(TESTS / "host-image.fs"), *loader,
-                   str(TESTS / "host-units.fs"), str(script)]
-        proc = subprocess.run(command, capture_output=True, text=True, timeout=timeout,
-                              stdin=subprocess.DEVNULL)
-    out = [l for l in proc.stdout.splitlines() if l.startswith(("ok", "error"))]
-    if proc.returncode or len(out) != len(forth_texts):
-        raise RuntimeError(f"gforth host assembler failed (rc {proc.returncode}):\n"
-                           f"{proc.stdout[-2000:]}\n{proc.stderr[-2000:]}")
+    stdout = gforth(sixteen_loader if sixteen else host_loader,
+                    "\n".join(lines) + "\nbye\n", timeout)
+    out = [l for l in stdout.splitlines() if l.startswith(("ok", "error"))]
+    if len(out) != len(forth_texts):
+        raise RuntimeError(f"gforth answered {len(out)} of {len(forth_texts)} units:\n"
+                           f"{stdout[-2000:]}")
     results = []
     for line in out:
         kind, _, rest = line.partition(" ")

@@ -42,7 +42,12 @@ def _label_relative(statement):
 
 def assemble(statements):
     """The 16-bit words pdpy11 assembles for the statements, placed at ORIGIN."""
-    text = f".LINK {ORIGIN:o}\nZ:\n" + "\n".join(_label_relative(s) for s in statements) + "\n"
+    return assemble_source(f".LINK {ORIGIN:o}\nZ:\n" +
+                           "\n".join(_label_relative(s) for s in statements) + "\n")
+
+
+def assemble_source(text, origin=ORIGIN):
+    """The words of a whole MACRO-11 source that places itself (.LINK) at origin."""
     handler = _Collect()
     try:
         with reports.handle_reports(handler):
@@ -50,6 +55,6 @@ def assemble(statements):
             base, code = Compiler().compile_and_link_files([parsed])
     except reports.UnrecoverableError:
         base = None
-    if handler.messages or base != ORIGIN:
-        raise ReferenceError(f"pdpy11 on {statements!r}: {handler.messages}")
+    if handler.messages or base != origin:
+        raise ReferenceError(f"pdpy11: {handler.messages or f'placed at {base}'}\n{text[:300]}")
     return [code[i] | code[i + 1] << 8 for i in range(0, len(code), 2)]
