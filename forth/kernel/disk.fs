@@ -33,41 +33,43 @@ DECIMAL
 1024 CONSTANT B/BUF              \ bytes per block
 VARIABLE #READS   VARIABLE #WRITES   \ transfers done: LRU tests, statistics
 VARIABLE RL-BLK                  \ block of the transfer under way, for messages
+VARIABLE RL-FN                   \ its function: 5 write, 6 read
+: RL-THROW ( -- ) RL-FN @ 5 = IF -34 ELSE -33 THEN THROW ; \ write/read error
 
 \ ---- messages ------------------------------------------------------------
-: .O6 ( u -- ) BASE @ >R 8 BASE ! 0 <# # # # # # # #> TYPE R> BASE ! ;
 : ?.BIT ( x mask c-addr u -- x ) \ print the name when the bit is set
    >R >R OVER AND IF SPACE R> R> TYPE ELSE R> R> 2DROP THEN ;
 : .CSR ( csr -- ) \ controller status, octal, then its error bits by name
-   ."  CSR=" DUP .O6
+   ."  CSR=" DUP .OCTAL
    2000O S" incomplete" ?.BIT   4000O S" data-check" ?.BIT
    10000O S" header-not-found" ?.BIT   20000O S" no-memory" ?.BIT
    40000O S" drive-error" ?.BIT  DROP ;
 : .DRIVE ( status -- ) \ drive status (MPR after get status), decoded
-   ."  drive=" DUP .O6
+   ."  drive=" DUP .OCTAL
    DUP 7 AND 5 <> IF ."  not-ready" THEN
    40O S" cover-open" ?.BIT   400O S" select-error" ?.BIT
    1000O S" volume-check" ?.BIT   2000O S" write-gate-error" ?.BIT
    4000O S" spin-error" ?.BIT   10000O S" seek-timeout" ?.BIT
    20000O S" write-locked" ?.BIT   40000O S" head-current-error" ?.BIT
    100000O S" write-data-error" ?.BIT  DROP ;
-: .RL-BLOCK ( -- ) CR ." RL0 block " RL-BLK @ U. ;
+: .RL-BLOCK ( -- ) \ start of every driver message: which transfer failed
+   CR ." RL0 block " RL-BLK @ U. RL-FN @ 5 = IF ." write " ELSE ." read " THEN ;
 
 \ ---- the controller --------------------------------------------------------
 : RL-READY? ( -- f ) RLCS @ 201O AND 201O = ;  \ controller and drive ready
 : RL-WAIT ( -- ) \ poll until ready; a dead controller is an error, not a hang
    0 BEGIN RL-READY? 0= WHILE 1+ DUP 0= IF
-      DROP .RL-BLOCK RLCS @ .CSR TRUE ABORT" RL0 timeout" THEN
+      DROP .RL-BLOCK ." timed out:" RLCS @ .CSR RL-THROW THEN
    REPEAT DROP ;
 : RL-DO ( fn -- csr ) 2* RLCS ! RL-WAIT RLCS @ ;  \ run a function on drive 0
 : RL-STATUS ( dar -- status ) RLDA ! 2 RL-DO DROP RLMP @ ; \ get status
 : RL-FAIL ( csr -- ) \ report a failed function with the drive status, abort
-   .RL-BLOCK .CSR 3 RL-STATUS .DRIVE TRUE ABORT" RL0 I/O error" ;
+   .RL-BLOCK ." failed:" .CSR 3 RL-STATUS .DRIVE RL-THROW ;
 : ?RL-OK ( csr -- ) DUP 0< IF RL-FAIL THEN DROP ;
 : RL-CHECK ( write? -- ) \ the drive must be loaded, spinning and, for a write,
    13O RL-STATUS              \ not locked; get status also clears volume check
    DUP 7 AND 5 <> ROT IF OVER 20000O AND OR THEN
-   IF .RL-BLOCK .DRIVE TRUE ABORT" RL0 not ready for the transfer" THEN DROP ;
+   IF .RL-BLOCK ." not ready:" .DRIVE RL-THROW THEN DROP ;
 : RL-CYL ( -- cyl ) 4 RL-DO ?RL-OK RLMP @ 7 RSHIFT ; \ read header: where heads are
 : RL-DA ( blk -- da ) 10 /MOD 64 * SWAP 4 * + ;  \ track<<6 | first sector
 : RL-SEEK ( da -- ) \ move the heads to the cylinder and head of da
@@ -77,20 +79,21 @@ VARIABLE RL-BLK                  \ block of the transfer under way, for messages
    RLDA ! 3 RL-DO ?RL-OK ;
 : ?BLOCK# ( blk -- blk ) \ a block past the end of the disk is an error
    DUP #BLOCKS U< 0= IF CR ." block " DUP U. ." is past the end of the disk (0.."
-      #BLOCKS 1- 0 U.R ." )" TRUE ABORT" no such block" THEN ;
+      #BLOCKS 1- 0 U.R ." )" -35 THROW THEN ;
 : RL-XFER ( addr blk fn -- ) \ fn 5 writes, 6 reads block blk at addr
-   >R ?BLOCK# DUP RL-BLK ! R@ 5 = RL-CHECK
+   DUP RL-FN ! >R ?BLOCK# DUP RL-BLK ! R@ 5 = RL-CHECK
    RL-DA DUP RL-SEEK RLDA ! RLBA ! B/BUF 2/ NEGATE RLMP ! R> RL-DO ?RL-OK ;
 : RL-READ ( addr blk -- ) 6 RL-XFER 1 #READS +! ;
 : RL-WRITE ( addr blk -- ) 5 RL-XFER 1 #WRITES +! ;
 
 \ ---- block buffers: 4, least recently used first out --------------------
-4 CONSTANT #BUFS
-CREATE BUF-DATA  #BUFS B/BUF * ALLOT
+\ The data live in the kernel's BUFFERS area (forth/kernel/memory.fs, above the
+\ dictionary); the tables below are in the image, so every boot starts empty.
+4 CONSTANT #BUFS                 \ the four-entry tables below follow from it
 CREATE BUF-BLK   -1 , -1 , -1 , -1 ,   \ block in each buffer, -1 = none
 CREATE BUF-UPD    0 ,  0 ,  0 ,  0 ,   \ true when the buffer was UPDATEd
 CREATE BUF-MRU    0 ,  1 ,  2 ,  3 ,   \ buffer numbers, most recent first
-: BUF-ADDR ( i -- addr ) B/BUF * BUF-DATA + ;
+: BUF-ADDR ( i -- addr ) B/BUF * BUFFERS + ;
 : >BLK ( i -- addr ) 2* BUF-BLK + ;
 : >UPD ( i -- addr ) 2* BUF-UPD + ;
 : TOUCH ( i -- ) \ make buffer i the most recently used
@@ -119,7 +122,8 @@ CREATE BUF-MRU    0 ,  1 ,  2 ,  3 ,   \ buffer numbers, most recent first
 : LOAD ( blk -- ) \ interpret block blk, then continue where we were
    DUP 0= ABORT" block 0 cannot be loaded"
    DUP BLOCK DROP                    \ a bad block fails here, source unchanged
-   BLK @ >R >IN @ >R  BLK ! 0 >IN !  INTERPRET  R> >IN ! R> BLK ! ;
+   BLK @ >R >IN @ >R SOURCE-ID @ >R  BLK ! 0 >IN ! 0 SOURCE-ID !
+   INTERPRET  R> SOURCE-ID ! R> >IN ! R> BLK ! ;
 : THRU ( blk1 blk2 -- ) 1+ SWAP ?DO I LOAD LOOP ;
 : --> ( -- ) \ continue loading with the next block
    BLK @ 0= ABORT" --> outside a loaded block"  1 BLK +! 0 >IN ! ; IMMEDIATE
