@@ -32,31 +32,35 @@ VARIABLE ASM-DEPTH                ( stack depth at ASM-START )
   ASM-OP1 ASM-OP2 ASM-LAST @ DUP 7 > ASM-ERR?
   ABORT" mode word after a mode word" ;
 
-( Registers: each records itself as a mode-0 operand. )
-: ASM-REG ( n "name" -- ) CREATE , DOES> ( -- ) @ 0 SWAP ASM-OP! ;
-0 ASM-REG R0  1 ASM-REG R1  2 ASM-REG R2  3 ASM-REG R3
-4 ASM-REG R4  5 ASM-REG R5  6 ASM-REG R6  7 ASM-REG R7
-1 ASM-REG T   2 ASM-REG W   4 ASM-REG IP  5 ASM-REG S
-6 ASM-REG RP  6 ASM-REG SP  7 ASM-REG PC
+( Registers: each records itself as a mode-0 operand.  Every    )
+( instruction and mode word is a colon definition, not the child  )
+( of a defining word, so that a metacompiler can build them all.  )
+: ASM-REG ( n -- ) 0 SWAP ASM-OP! ;
+: R0 ( -- ) 0 ASM-REG ;   : R1 ( -- ) 1 ASM-REG ;
+: R2 ( -- ) 2 ASM-REG ;   : R3 ( -- ) 3 ASM-REG ;
+: R4 ( -- ) 4 ASM-REG ;   : R5 ( -- ) 5 ASM-REG ;
+: R6 ( -- ) 6 ASM-REG ;   : R7 ( -- ) 7 ASM-REG ;
+: T ( -- ) 1 ASM-REG ;    : W ( -- ) 2 ASM-REG ;
+: IP ( -- ) 4 ASM-REG ;   : S ( -- ) 5 ASM-REG ;
+: RP ( -- ) 6 ASM-REG ;   : SP ( -- ) 6 ASM-REG ;
+: PC ( -- ) 7 ASM-REG ;
 
 ( Modes 1-5 turn the latest register into reg-deferred forms. )
-: ASM-MODE ( mode "name" -- ) CREATE ,
-  DOES> ( -- ) @ 8 * ASM-BARE + ASM-OP1 ASM-OP2 ASM-LAST ! ;
-1 ASM-MODE )    ( mode 1: register deferred       )
-2 ASM-MODE )+   ( mode 2: autoincrement           )
-3 ASM-MODE @)+  ( mode 3: autoincrement deferred  )
-4 ASM-MODE -)   ( mode 4: autodecrement           )
-5 ASM-MODE @-)  ( mode 5: autodecrement deferred  )
+: ASM-MODE ( mode -- ) 8 * ASM-BARE + ASM-OP1 ASM-OP2 ASM-LAST ! ;
+: ) ( -- ) 1 ASM-MODE ;     ( mode 1: register deferred      )
+: )+ ( -- ) 2 ASM-MODE ;    ( mode 2: autoincrement          )
+: @)+ ( -- ) 3 ASM-MODE ;   ( mode 3: autoincrement deferred )
+: -) ( -- ) 4 ASM-MODE ;    ( mode 4: autodecrement          )
+: @-) ( -- ) 5 ASM-MODE ;   ( mode 5: autodecrement deferred )
 
 ( Modes 6-7: X R then I-paren; the index X sits just below R. )
-: ASM-INDEX ( mode "name" -- ) CREATE ,
-  DOES> ( x -- ) @ 8 * ASM-BARE + 64 +  ( x field )
+: ASM-INDEX ( x mode -- ) 8 * ASM-BARE + 64 +  ( x field )
   DEPTH 1- DUP ASM-D1 ASM-D2 ASM-LAST @ = SWAP 0> AND 0=
   ASM-ERR? ABORT" index must come just before the register"
   ASM-OP1 ASM-OP2 ASM-LAST !  ASM-X1 ASM-X2 ASM-LAST !
   DEPTH ASM-D1 ASM-D2 ASM-LAST ! ;
-6 ASM-INDEX I)   ( mode 6: indexed               )
-7 ASM-INDEX @I)  ( mode 7: index deferred        )
+: I) ( x -- ) 6 ASM-INDEX ;     ( mode 6: indexed        )
+: @I) ( x -- ) 7 ASM-INDEX ;    ( mode 7: index deferred )
 
 : # ( n -- ) ( immediate operand: mode 2 on PC, n follows )
   DEPTH 1 < ASM-ERR? ABORT" # needs a number" 87 ASM-OP! ;
@@ -90,38 +94,60 @@ VARIABLE ASM-DEPTH                ( stack depth at ASM-START )
 : ASM-SINGLE ( op -- ) ASM-OP1 ASM-X1 ASM-EMIT ;
 
 ( Double operand: dst src OP, -- MACRO-11 order reversed. )
-: ASM-2OP ( op "name" -- ) CREATE ,
-  DOES> ( -- ) @ 2 ASM-OPERANDS ASM-OP1 ASM-?WRITE ASM-DOUBLE ;
-: ASM-2OPR ( op "name" -- ) ( destination only read: CMP BIT )
-  CREATE , DOES> ( -- ) @ 2 ASM-OPERANDS ASM-DOUBLE ;
- 4096 ASM-2OP MOV,     36864 ASM-2OP MOVB,    ( 010000 110000 )
- 8192 ASM-2OPR CMP,    40960 ASM-2OPR CMPB,   ( 020000 120000 )
-12288 ASM-2OPR BIT,    45056 ASM-2OPR BITB,   ( 030000 130000 )
-16384 ASM-2OP BIC,     49152 ASM-2OP BICB,    ( 040000 140000 )
-20480 ASM-2OP BIS,     53248 ASM-2OP BISB,    ( 050000 150000 )
-24576 ASM-2OP ADD,     57344 ASM-2OP SUB,     ( 060000 160000 )
+: ASM-2OP ( op -- ) ( destination written )
+  2 ASM-OPERANDS ASM-OP1 ASM-?WRITE ASM-DOUBLE ;
+: ASM-2OPR ( op -- ) ( destination only read: CMP BIT )
+  2 ASM-OPERANDS ASM-DOUBLE ;
+: MOV, ( -- ) 4096 ASM-2OP ;      ( 010000 )
+: MOVB, ( -- ) 36864 ASM-2OP ;    ( 110000 )
+: CMP, ( -- ) 8192 ASM-2OPR ;     ( 020000 )
+: CMPB, ( -- ) 40960 ASM-2OPR ;   ( 120000 )
+: BIT, ( -- ) 12288 ASM-2OPR ;    ( 030000 )
+: BITB, ( -- ) 45056 ASM-2OPR ;   ( 130000 )
+: BIC, ( -- ) 16384 ASM-2OP ;     ( 040000 )
+: BICB, ( -- ) 49152 ASM-2OP ;    ( 140000 )
+: BIS, ( -- ) 20480 ASM-2OP ;     ( 050000 )
+: BISB, ( -- ) 53248 ASM-2OP ;    ( 150000 )
+: ADD, ( -- ) 24576 ASM-2OP ;     ( 060000 )
+: SUB, ( -- ) 57344 ASM-2OP ;     ( 160000 )
 
 ( Single operand. )
-: ASM-1OP ( op "name" -- ) ( writes its operand )
-  CREATE , DOES> ( -- ) @ 1 ASM-OPERANDS ASM-OP1 ASM-?WRITE ASM-SINGLE ;
-: ASM-1OPR ( op "name" -- ) ( only reads its operand )
-  CREATE , DOES> ( -- ) @ 1 ASM-OPERANDS ASM-SINGLE ;
- 2560 ASM-1OP CLR,     35328 ASM-1OP CLRB,    ( 005000 105000 )
- 2624 ASM-1OP COM,     35392 ASM-1OP COMB,    ( 005100 105100 )
- 2688 ASM-1OP INC,     35456 ASM-1OP INCB,    ( 005200 105200 )
- 2752 ASM-1OP DEC,     35520 ASM-1OP DECB,    ( 005300 105300 )
- 2816 ASM-1OP NEG,     35584 ASM-1OP NEGB,    ( 005400 105400 )
- 2880 ASM-1OP ADC,     35648 ASM-1OP ADCB,    ( 005500 105500 )
- 2944 ASM-1OP SBC,     35712 ASM-1OP SBCB,    ( 005600 105600 )
- 3008 ASM-1OPR TST,    35776 ASM-1OPR TSTB,   ( 005700 105700 )
- 3072 ASM-1OP ROR,     35840 ASM-1OP RORB,    ( 006000 106000 )
- 3136 ASM-1OP ROL,     35904 ASM-1OP ROLB,    ( 006100 106100 )
- 3200 ASM-1OP ASR,     35968 ASM-1OP ASRB,    ( 006200 106200 )
- 3264 ASM-1OP ASL,     36032 ASM-1OP ASLB,    ( 006300 106300 )
-  192 ASM-1OP SWAB,     3520 ASM-1OP SXT,     ( 000300 006700 )
-36288 ASM-1OP MFPS,    36096 ASM-1OPR MTPS,   ( 106700 106400 )
- 3392 ASM-1OPR MFPI,    3456 ASM-1OP MTPI,    ( 006500 006600 )
-36160 ASM-1OPR MFPD,   36224 ASM-1OP MTPD,    ( 106500 106600 )
+: ASM-1OP ( op -- ) ( writes its operand )
+  1 ASM-OPERANDS ASM-OP1 ASM-?WRITE ASM-SINGLE ;
+: ASM-1OPR ( op -- ) ( only reads its operand )
+  1 ASM-OPERANDS ASM-SINGLE ;
+: CLR, ( -- ) 2560 ASM-1OP ;      ( 005000 )
+: CLRB, ( -- ) 35328 ASM-1OP ;    ( 105000 )
+: COM, ( -- ) 2624 ASM-1OP ;      ( 005100 )
+: COMB, ( -- ) 35392 ASM-1OP ;    ( 105100 )
+: INC, ( -- ) 2688 ASM-1OP ;      ( 005200 )
+: INCB, ( -- ) 35456 ASM-1OP ;    ( 105200 )
+: DEC, ( -- ) 2752 ASM-1OP ;      ( 005300 )
+: DECB, ( -- ) 35520 ASM-1OP ;    ( 105300 )
+: NEG, ( -- ) 2816 ASM-1OP ;      ( 005400 )
+: NEGB, ( -- ) 35584 ASM-1OP ;    ( 105400 )
+: ADC, ( -- ) 2880 ASM-1OP ;      ( 005500 )
+: ADCB, ( -- ) 35648 ASM-1OP ;    ( 105500 )
+: SBC, ( -- ) 2944 ASM-1OP ;      ( 005600 )
+: SBCB, ( -- ) 35712 ASM-1OP ;    ( 105600 )
+: TST, ( -- ) 3008 ASM-1OPR ;     ( 005700 )
+: TSTB, ( -- ) 35776 ASM-1OPR ;   ( 105700 )
+: ROR, ( -- ) 3072 ASM-1OP ;      ( 006000 )
+: RORB, ( -- ) 35840 ASM-1OP ;    ( 106000 )
+: ROL, ( -- ) 3136 ASM-1OP ;      ( 006100 )
+: ROLB, ( -- ) 35904 ASM-1OP ;    ( 106100 )
+: ASR, ( -- ) 3200 ASM-1OP ;      ( 006200 )
+: ASRB, ( -- ) 35968 ASM-1OP ;    ( 106200 )
+: ASL, ( -- ) 3264 ASM-1OP ;      ( 006300 )
+: ASLB, ( -- ) 36032 ASM-1OP ;    ( 106300 )
+: SWAB, ( -- ) 192 ASM-1OP ;      ( 000300 )
+: SXT, ( -- ) 3520 ASM-1OP ;      ( 006700 )
+: MFPS, ( -- ) 36288 ASM-1OP ;    ( 106700 )
+: MTPS, ( -- ) 36096 ASM-1OPR ;   ( 106400 )
+: MFPI, ( -- ) 3392 ASM-1OPR ;    ( 006500 )
+: MTPI, ( -- ) 3456 ASM-1OP ;     ( 006600 )
+: MFPD, ( -- ) 36160 ASM-1OPR ;   ( 106500 )
+: MTPD, ( -- ) 36224 ASM-1OP ;    ( 106600 )
 
 : JMP, ( -- ) ( dst JMP, -- mode 0 would trap )
   64 1 ASM-OPERANDS ASM-OP1 ASM-?MEM ASM-SINGLE ;   ( 000100 )
@@ -134,10 +160,9 @@ VARIABLE ASM-DEPTH                ( stack depth at ASM-START )
 ( EIS: reg src MUL, = MUL src,reg.  The register is operand one. )
 : ASM-EIS ( op -- ) ( check, then emit reg and source )
   ASM-OP1 ASM-?REG ASM-OP1 ASM-F 64 * OR ASM-OP2 ASM-X2 ASM-EMIT ;
-: ASM-EIS-OP ( op "name" -- )
-  CREATE , DOES> ( -- ) @ 2 ASM-OPERANDS ASM-EIS ;
-28672 ASM-EIS-OP MUL,                  ( 070000 )
-29696 ASM-EIS-OP ASH,  30208 ASM-EIS-OP ASHC,  ( 072000 073000 )
+: MUL, ( -- ) 28672 2 ASM-OPERANDS ASM-EIS ;  ( 070000 )
+: ASH, ( -- ) 29696 2 ASM-OPERANDS ASM-EIS ;  ( 072000 )
+: ASHC, ( -- ) 30208 2 ASM-OPERANDS ASM-EIS ;  ( 073000 )
 : DIV, ( -- ) ( the quotient/remainder pair needs an even register )
   29184 2 ASM-OPERANDS ASM-OP1 ASM-?REG            ( 071000 )
   ASM-OP1 @ 1 AND ASM-ERR? ABORT" DIV, needs an even register"
@@ -152,15 +177,26 @@ VARIABLE ASM-DEPTH                ( stack depth at ASM-START )
   OR A, ASM-RESET ;
 
 ( Operand-less instructions and those with a number field. )
-: ASM-0OP ( op "name" -- ) CREATE , DOES> ( -- ) @ 0 ASM-OPERANDS A, ;
-  0 ASM-0OP HALT,   1 ASM-0OP WAIT,   2 ASM-0OP RTI,    3 ASM-0OP BPT,
-  4 ASM-0OP IOT,    5 ASM-0OP RESET,  6 ASM-0OP RTT,    7 ASM-0OP MFPT,
-160 ASM-0OP NOP,  161 ASM-0OP CLC,  162 ASM-0OP CLV,  164 ASM-0OP CLZ,
-                   ( 000240 000241 000242 000244 )
-168 ASM-0OP CLN,  175 ASM-0OP CCC,  177 ASM-0OP SEC,  178 ASM-0OP SEV,
-                   ( 000250 000257 000261 000262 )
-180 ASM-0OP SEZ,  184 ASM-0OP SEN,  191 ASM-0OP SCC,
-                   ( 000264 000270 000277 )
+: ASM-0OP ( op -- ) 0 ASM-OPERANDS A, ;
+: HALT, ( -- ) 0 ASM-0OP ;        ( 000000 )
+: WAIT, ( -- ) 1 ASM-0OP ;        ( 000001 )
+: RTI, ( -- ) 2 ASM-0OP ;         ( 000002 )
+: BPT, ( -- ) 3 ASM-0OP ;         ( 000003 )
+: IOT, ( -- ) 4 ASM-0OP ;         ( 000004 )
+: RESET, ( -- ) 5 ASM-0OP ;       ( 000005 )
+: RTT, ( -- ) 6 ASM-0OP ;         ( 000006 )
+: MFPT, ( -- ) 7 ASM-0OP ;        ( 000007 )
+: NOP, ( -- ) 160 ASM-0OP ;       ( 000240 )
+: CLC, ( -- ) 161 ASM-0OP ;       ( 000241 )
+: CLV, ( -- ) 162 ASM-0OP ;       ( 000242 )
+: CLZ, ( -- ) 164 ASM-0OP ;       ( 000244 )
+: CLN, ( -- ) 168 ASM-0OP ;       ( 000250 )
+: CCC, ( -- ) 175 ASM-0OP ;       ( 000257 )
+: SEC, ( -- ) 177 ASM-0OP ;       ( 000261 )
+: SEV, ( -- ) 178 ASM-0OP ;       ( 000262 )
+: SEZ, ( -- ) 180 ASM-0OP ;       ( 000264 )
+: SEN, ( -- ) 184 ASM-0OP ;       ( 000270 )
+: SCC, ( -- ) 191 ASM-0OP ;       ( 000277 )
 : ASM-NUM, ( n max op -- ) ( op with n in its low bits, 0..max )
   >R OVER < OVER 0 < OR ASM-ERR? ABORT" number out of range"
   R> 0 ASM-OPERANDS OR A, ;
@@ -185,16 +221,23 @@ VARIABLE ASM-DEPTH                ( stack depth at ASM-START )
   ABORT" branch out of range" 255 AND ;
 : ASM-BRANCH, ( addr op -- ) ( emit op branching to addr )
   0 ASM-OPERANDS SWAP AHERE ASM-OFFSET OR A, ;
-: ASM-BR ( op "name" -- ) CREATE , DOES> ( addr -- ) @ ASM-BRANCH, ;
-  256 ASM-BR BR,    ( 000400 )
-  512 ASM-BR BNE,     768 ASM-BR BEQ,    ( 001000 001400 )
- 1024 ASM-BR BGE,    1280 ASM-BR BLT,    ( 002000 002400 )
- 1536 ASM-BR BGT,    1792 ASM-BR BLE,    ( 003000 003400 )
-32768 ASM-BR BPL,   33024 ASM-BR BMI,    ( 100000 100400 )
-33280 ASM-BR BHI,   33536 ASM-BR BLOS,   ( 101000 101400 )
-33792 ASM-BR BVC,   34048 ASM-BR BVS,    ( 102000 102400 )
-34304 ASM-BR BCC,   34560 ASM-BR BCS,    ( 103000 103400 )
-34304 ASM-BR BHIS,  34560 ASM-BR BLO,    ( 103000 103400 )
+: BR, ( addr -- ) 256 ASM-BRANCH, ;     ( 000400 )
+: BNE, ( addr -- ) 512 ASM-BRANCH, ;    ( 001000 )
+: BEQ, ( addr -- ) 768 ASM-BRANCH, ;    ( 001400 )
+: BGE, ( addr -- ) 1024 ASM-BRANCH, ;   ( 002000 )
+: BLT, ( addr -- ) 1280 ASM-BRANCH, ;   ( 002400 )
+: BGT, ( addr -- ) 1536 ASM-BRANCH, ;   ( 003000 )
+: BLE, ( addr -- ) 1792 ASM-BRANCH, ;   ( 003400 )
+: BPL, ( addr -- ) 32768 ASM-BRANCH, ;  ( 100000 )
+: BMI, ( addr -- ) 33024 ASM-BRANCH, ;  ( 100400 )
+: BHI, ( addr -- ) 33280 ASM-BRANCH, ;  ( 101000 )
+: BLOS, ( addr -- ) 33536 ASM-BRANCH, ; ( 101400 )
+: BVC, ( addr -- ) 33792 ASM-BRANCH, ;  ( 102000 )
+: BVS, ( addr -- ) 34048 ASM-BRANCH, ;  ( 102400 )
+: BCC, ( addr -- ) 34304 ASM-BRANCH, ;  ( 103000 )
+: BCS, ( addr -- ) 34560 ASM-BRANCH, ;  ( 103400 )
+: BHIS, ( addr -- ) 34304 ASM-BRANCH, ; ( 103000 )
+: BLO, ( addr -- ) 34560 ASM-BRANCH, ;  ( 103400 )
 
 ( Structured control.  Stack entries carry a tag so that a THEN, )
 ( without IF, or an UNTIL, without BEGIN, is caught.             )
