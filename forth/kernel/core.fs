@@ -113,12 +113,13 @@ VARIABLE ABORT-MSG  ( -- a ) \ counted message of the last ABORT"
 : OCTAL  ( -- )  8 BASE ! ;
 : ?  ( a -- )  @ . ;
 
-\ ---- console input: echo, backspace/delete, ^U; CR or LF ends a line --------------
+\ ---- console input: echo, backspace/delete, ^U, tab = blank; CR or LF ends a line
 VARIABLE LAST-CR  ( -- a ) \ the previous line ended with CR (skip its LF)
 : BACKUP  ( -- )  8 EMIT SPACE 8 EMIT ;
 : ACCEPT  ( a n -- n' )
   >R 0  BEGIN KEY
     DUP 10 = LAST-CR @ AND IF DROP KEY THEN  0 LAST-CR !
+    DUP 9 = IF DROP BL THEN  \ a tab is a blank
     DUP 13 <> OVER 10 <> AND WHILE
     DUP 8 = OVER 127 = OR IF DROP DUP IF 1- BACKUP THEN
     ELSE DUP 21 = IF DROP BEGIN DUP WHILE 1- BACKUP REPEAT

@@ -4,7 +4,10 @@
 \ Code fields: colon  JSR IP,@#DOCOL  (pushes IP, IP = thread, then NEXT)
 \              others JSR W,@#handler (W = parameter field, old W pushed)
 
-LABEL DOCOL  ( -- )  NEXT,  END-CODE
+\ DOCOL also guards the return stack: a runaway recursion is error -5 before it
+\ can overwrite the data stack and the dictionary below it
+LABEL DOCOL  ( -- )
+  R-LIMIT 40 + # RP CMP,  LO IF,  RP R-LIMIT 200 + # MOV,  -5 THROW,  THEN,  NEXT,  END-CODE
 LABEL DOVAR  ( -- a )  S -) W MOV,  RP )+ TST,  NEXT,  END-CODE
 LABEL DOCON  ( -- x )  S -) W ) MOV,  RP )+ TST,  NEXT,  END-CODE
 \ DOES> code is JSR IP,@#DODOES: return stack = IP, old W; W = body

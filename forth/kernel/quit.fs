@@ -52,6 +52,7 @@ VARIABLE BEST  ( -- a )
   DUP -2 = IF DROP ABORT-MSG @ COUNT TYPE EXIT THEN
   DUP -3 = IF DROP ." stack overflow" EXIT THEN
   DUP -4 = IF DROP ." stack underflow" EXIT THEN
+  DUP -5 = IF DROP ." return stack overflow" EXIT THEN
   DUP -8 = IF DROP ." dictionary full" EXIT THEN
   DUP -10 = IF DROP ." division by zero" EXIT THEN
   DUP -13 = IF DROP ." undefined word" EXIT THEN
