@@ -61,12 +61,13 @@ def test_load_defines_words_and_arrow_continues(image, boot):
 
 
 def test_thru_and_semicolon_s(image, boot):
-    put_block(image, 40, [": W40 40 ;", ";S", ": NEVER 1 ;"])
+    put_block(image, 40, [": W40 40 ;", ": EARLY ( -- 1 ) 1 ;S 2 ;", ";S", ": NEVER 1 ;"])
     put_block(image, 41, [": W41 41 ;  \\ a comment to the end of the line", ": W41B 410 ;"])
     m = boot()
     assert m.send("40 41 THRU  W40 . W41 . W41B .").split() == ["40", "41", "410"]
     r = m.reply("NEVER")
     assert not r.ok and "undefined word" in r.error
+    assert m.send("EARLY DEPTH . .").split() == ["1", "1"]  # compiled ;S is EXIT
 
 
 def test_error_in_loaded_block_names_block_and_line(image, boot):
@@ -103,6 +104,8 @@ def test_block_past_the_end_is_an_error_and_writes_nothing(image, boot):
         assert not r.ok, line
     r = m.reply("10240 BUFFER")
     assert "no such block" in r.error and "past the end" in r.output
+    r = m.reply("EMPTY-BUFFERS UPDATE")
+    assert not r.ok and "no current block" in r.error
     # the last block exists, and nothing was ever written
     assert m.send("10239 BLOCK DROP  FLUSH  #WRITES @ .").split() == ["0"]
     m.close()
@@ -129,6 +132,7 @@ def test_lru_keeps_recent_blocks_and_updated_data(image, boot):
     m.send("FLUSH")
     assert m.send("#WRITES @ .").split() == ["10"]
     assert m.send("EMPTY-BUFFERS 105 BLOCK C@ .").split() == ["140"]
+    assert m.send("3 BLOCK 7 TYPE").strip() == "block 3"   # a seek inwards
     m.close()
     for n in range(100, 110):
         assert get_block(image, n) == bytes([n + 35]) * BLOCK
@@ -175,3 +179,15 @@ def test_write_locked_disk_keeps_the_update(tmp_path):
         # the changed buffer is still there, still marked for writing
         assert m.send("9 BLOCK 3 TYPE").strip() == "ZZZ"
     assert get_block(disk, 9) == bytes(BLOCK)
+
+
+def test_controller_error_names_block_and_status(image, boot):
+    # A read of block 5000's sectors while the heads sit on cylinder 0: the
+    # RLV12 finds no matching header. The driver's own error path reports it.
+    m = boot()
+    m.send("EMPTY-BUFFERS 1 BLOCK DROP  5000 RL-BLK ! 6 RL-FN !")
+    r = m.reply("5000 RL-DA RLDA ! BUFFERS RLBA ! -512 RLMP ! 6 RL-DO ?RL-OK")
+    assert not r.ok and r.error.startswith("block read error")
+    assert "RL0 block 5000 read failed: CSR=" in r.output
+    assert "header-not-found" in r.output and "drive=" in r.output
+    assert m.send("5000 BLOCK DROP 2 2 + .").split() == ["4"]  # the driver recovers
