@@ -93,6 +93,7 @@ VARIABLE RL-FN                   \ its function: 5 write, 6 read
 CREATE BUF-BLK   -1 , -1 , -1 , -1 ,   \ block in each buffer, -1 = none
 CREATE BUF-UPD    0 ,  0 ,  0 ,  0 ,   \ true when the buffer was UPDATEd
 CREATE BUF-MRU    0 ,  1 ,  2 ,  3 ,   \ buffer numbers, most recent first
+CREATE CUR-BLK    -1 ,                \ the block UPDATE marks, -1 = none
 : BUF-ADDR ( i -- addr ) B/BUF * BUFFERS + ;
 : >BLK ( i -- addr ) 2* BUF-BLK + ;
 : >UPD ( i -- addr ) 2* BUF-UPD + ;
@@ -107,21 +108,23 @@ CREATE BUF-MRU    0 ,  1 ,  2 ,  3 ,   \ buffer numbers, most recent first
    BUF-MRU #BUFS 1- 2* + @ DUP WRITE-BACK -1 OVER >BLK ! ;
 : BUFFER ( blk -- addr ) \ assign a buffer to blk, contents undefined
    ?BLOCK# DUP RESIDENT DUP 0< IF DROP FREE-BUF THEN
-   TUCK >BLK ! DUP TOUCH BUF-ADDR ;
-: BLOCK ( blk -- addr ) \ the buffer holding blk, read from disk if needed
+   OVER CUR-BLK ! TUCK >BLK ! DUP TOUCH BUF-ADDR ;
+: (BLOCK) ( blk -- addr ) \ BLOCK for SOURCE: leaves the current block alone
    ?BLOCK# DUP RESIDENT DUP 0< IF DROP FREE-BUF 2DUP BUF-ADDR SWAP RL-READ THEN
    TUCK >BLK ! DUP TOUCH BUF-ADDR ;
-: UPDATE ( -- ) \ mark the most recently used block buffer as changed
-   BUF-MRU @ DUP >BLK @ 0< ABORT" UPDATE: no current block"
+: BLOCK ( blk -- addr ) \ the buffer holding blk, read if needed; UPDATE's block
+   DUP (BLOCK) SWAP CUR-BLK ! ;
+: UPDATE ( -- ) \ mark the block last given by BLOCK or BUFFER as changed
+   CUR-BLK @ DUP 0< 0= IF RESIDENT THEN DUP 0< ABORT" UPDATE: no current block"
    TRUE SWAP >UPD ! ;
 : SAVE-BUFFERS ( -- ) #BUFS 0 DO I WRITE-BACK LOOP ;
-: EMPTY-BUFFERS ( -- ) #BUFS 0 DO -1 I >BLK ! 0 I >UPD ! LOOP ;
+: EMPTY-BUFFERS ( -- ) #BUFS 0 DO -1 I >BLK ! 0 I >UPD ! LOOP -1 CUR-BLK ! ;
 : FLUSH ( -- ) SAVE-BUFFERS EMPTY-BUFFERS ;
 
 \ ---- loading ---------------------------------------------------------------
 : LOAD ( blk -- ) \ interpret block blk, then continue where we were
    DUP 0= ABORT" block 0 cannot be loaded"
-   DUP BLOCK DROP                    \ a bad block fails here, source unchanged
+   DUP (BLOCK) DROP                  \ a bad block fails here, source unchanged
    BLK @ >R >IN @ >R SOURCE-ID @ >R  BLK ! 0 >IN ! 0 SOURCE-ID !
    INTERPRET  R> SOURCE-ID ! R> >IN ! R> BLK ! ;
 : THRU ( blk1 blk2 -- ) 1+ SWAP ?DO I LOAD LOOP ;
