@@ -76,8 +76,9 @@ VARIABLE ABORT-MSG  ( -- a ) \ counted message of the last ABORT"
 \ ---- the dictionary ----------------------------------------------------------------
 : HERE  ( -- a )  DP @ ;
 : UNUSED  ( -- n )  LIMIT HERE - 160 - ;
-: ALLOT  ( n -- )  \ dictionary full = error -8, nothing allotted
-  DUP 0> IF DUP UNUSED U> IF -8 THROW THEN THEN DP +! ;
+: ALLOT  ( n -- )  \ n signed; nothing allotted on an error
+  DUP 0< IF DUP NEGATE HERE FENCE @ - U> IF -9 THROW THEN  \ never below the kernel
+  ELSE DUP UNUSED U> IF -8 THROW THEN THEN  DP +! ;
 : ,  ( x -- )  HERE 2 ALLOT ! ;
 : C,  ( c -- )  HERE 1 ALLOT C! ;
 : ALIGN  ( -- )  HERE 1 AND ALLOT ;

@@ -73,10 +73,12 @@
 : ,"  ( "ccc"" -- )  [CHAR] " PARSE DUP C, HERE OVER ALLOT SWAP CMOVE ALIGN ;
 : ."  ( "ccc"" -- )  ['] (.") , ," ;  IMMEDIATE COMPILE-ONLY
 : ABORT"  ( "ccc"" -- )  ['] (ABORT") , ," ;  IMMEDIATE COMPILE-ONLY
-CREATE SBUF 128 ALLOT  ( -- a ) \ S" while interpreting
-: S"  ( "ccc"" -- a u )
+CREATE SBUFS 256 ALLOT  ( -- a ) \ S" while interpreting: two buffers in turn
+VARIABLE SBUF  ( -- a ) \ offset of the buffer used last
+: S"  ( "text<quote>" -- a u )
   STATE @ IF ['] (S") , ," EXIT THEN
-  [CHAR] " PARSE 128 MIN >R SBUF R@ CMOVE SBUF R> ;  IMMEDIATE
+  SBUF @ 128 XOR DUP SBUF ! SBUFS +  >R
+  [CHAR] " PARSE 128 MIN R@ SWAP DUP >R CMOVE 2R> ;  IMMEDIATE
 : [CHAR]  ( "c" -- )  CHAR POSTPONE LITERAL ;  IMMEDIATE COMPILE-ONLY
 : [']  ( "name" -- )  ' POSTPONE LITERAL ;  IMMEDIATE COMPILE-ONLY
 : [COMPILE]  ( "name" -- )  ' , ;  IMMEDIATE COMPILE-ONLY

@@ -54,6 +54,7 @@ VARIABLE BEST  ( -- a )
   DUP -4 = IF DROP ." stack underflow" EXIT THEN
   DUP -5 = IF DROP ." return stack overflow" EXIT THEN
   DUP -8 = IF DROP ." dictionary full" EXIT THEN
+  DUP -9 = IF DROP ." invalid memory address" EXIT THEN
   DUP -10 = IF DROP ." division by zero" EXIT THEN
   DUP -13 = IF DROP ." undefined word" EXIT THEN
   DUP -14 = IF DROP ." compile-only word interpreted" EXIT THEN

@@ -25,6 +25,7 @@ def test_hayes_core_test():
                 errors.append(f"{n}: {line.strip()} -> {r.error}")
             if "TEST FAILED" in r.output:
                 failed_lines.append(f"{n}: {r.output.strip()}")
+        m.send("DECIMAL")  # the core test leaves BASE at 16
         tests = int(m.send("#TESTS @ .").split()[0])
         failed = int(m.send("#FAILED @ .").split()[0])
     print(f"\nHayes core test: {tests} tests, {failed} failed, "
