@@ -1,9 +1,9 @@
 """The resident ASSEMBLER on the emulated 11/23: the same corpus, on the machine.
 
-The console is slow to type into (SIMH polls its keyboard at the clock rate),
-so the units travel on the RL02 disk: packed into blocks, LOADed with one
-short console line, each printing `U:` and its words in octal. A unit that
-must fail gets a block of its own, so that its error ends only its own LOAD.
+The units travel on the RL02 disk, as the appendix's blocks will: packed into
+blocks and LOADed with one console line, each unit printing `U:` and its words
+in octal. A unit that must fail gets a block of its own, so that its error ends
+only its own LOAD; `EMITTED?` then tells how many words it left.
 """
 import re
 import shutil
