@@ -26,14 +26,16 @@
 \ the 60 Hz servo interrupt keeps being served during the wait. An
 \ interrupt-driven driver would only pay off with a multitasker.
 
-DECIMAL
-174400O CONSTANT RLCS    174402O CONSTANT RLBA
-174404O CONSTANT RLDA    174406O CONSTANT RLMP
-10240 CONSTANT #BLOCKS           \ blocks on an RL02 (40960 sectors / 4)
-1024 CONSTANT B/BUF              \ bytes per block
-VARIABLE #READS   VARIABLE #WRITES   \ transfers done: LRU tests, statistics
-VARIABLE RL-BLK                  \ block of the transfer under way, for messages
-VARIABLE RL-FN                   \ its function: 5 write, 6 read
+174400O CONSTANT RLCS  ( -- a ) \ control/status register
+174402O CONSTANT RLBA  ( -- a ) \ bus address register
+174404O CONSTANT RLDA  ( -- a ) \ disk address register
+174406O CONSTANT RLMP  ( -- a ) \ multipurpose register
+10240 CONSTANT #BLOCKS  ( -- n ) \ blocks on an RL02 (40960 sectors / 4)
+1024 CONSTANT B/BUF  ( -- n ) \ bytes per block
+VARIABLE #READS  ( -- a ) \ blocks read so far (LRU tests, statistics)
+VARIABLE #WRITES  ( -- a ) \ blocks written so far
+VARIABLE RL-BLK  ( -- a ) \ block of the transfer under way, for messages
+VARIABLE RL-FN  ( -- a ) \ its function: 5 write, 6 read
 : RL-THROW ( -- ) RL-FN @ 5 = IF -34 ELSE -33 THEN THROW ; \ write/read error
 
 \ ---- messages ------------------------------------------------------------
@@ -89,11 +91,11 @@ VARIABLE RL-FN                   \ its function: 5 write, 6 read
 \ ---- block buffers: 4, least recently used first out --------------------
 \ The data live in the kernel's BUFFERS area (forth/kernel/memory.fs, above the
 \ dictionary); the tables below are in the image, so every boot starts empty.
-4 CONSTANT #BUFS                 \ the four-entry tables below follow from it
-CREATE BUF-BLK   -1 , -1 , -1 , -1 ,   \ block in each buffer, -1 = none
-CREATE BUF-UPD    0 ,  0 ,  0 ,  0 ,   \ true when the buffer was UPDATEd
-CREATE BUF-MRU    0 ,  1 ,  2 ,  3 ,   \ buffer numbers, most recent first
-CREATE CUR-BLK    -1 ,                \ the block UPDATE marks, -1 = none
+4 CONSTANT #BUFS  ( -- n ) \ the four-entry tables below follow from it
+CREATE BUF-BLK  ( -- a ) -1 , -1 , -1 , -1 ,  \ block in each buffer, -1 = none
+CREATE BUF-UPD  ( -- a )  0 ,  0 ,  0 ,  0 ,  \ true when the buffer was UPDATEd
+CREATE BUF-MRU  ( -- a )  0 ,  1 ,  2 ,  3 ,  \ buffer numbers, most recent first
+CREATE CUR-BLK  ( -- a ) -1 ,   \ the block UPDATE marks, -1 = none
 : BUF-ADDR ( i -- addr ) B/BUF * BUFFERS + ;
 : >BLK ( i -- addr ) 2* BUF-BLK + ;
 : >UPD ( i -- addr ) 2* BUF-UPD + ;
@@ -134,7 +136,7 @@ CREATE CUR-BLK    -1 ,                \ the block UPDATE marks, -1 = none
    STATE @ IF POSTPONE EXIT ELSE SOURCE NIP >IN ! THEN ; IMMEDIATE
 
 \ ---- listing -------------------------------------------------------------
-VARIABLE SCR                     \ the block last listed (the editor's block)
+VARIABLE SCR  ( -- a ) \ the block last listed (the editor's block)
 : -BLANKS ( addr len -- addr len' ) \ drop trailing blanks and control chars
    BEGIN DUP IF 2DUP + 1- C@ BL > 0= ELSE FALSE THEN WHILE 1- REPEAT ;
 : .LINE ( addr -- ) \ type a 64-character line, control characters as blanks
