@@ -191,3 +191,12 @@ def test_controller_error_names_block_and_status(image, boot):
     assert "RL0 block 5000 read failed: CSR=" in r.output
     assert "header-not-found" in r.output and "drive=" in r.output
     assert m.send("5000 BLOCK DROP 2 2 + .").split() == ["4"]  # the driver recovers
+
+
+def test_seek_selects_cylinder_and_head(image, boot):
+    # After a transfer, READ HEADER reports the track under the heads
+    # (cylinder * 2 + head): block n lives on track n / 10.
+    m = boot()
+    for n in (115, 105, 10239, 0, 31):
+        m.send(f"{n} BUFFER DROP UPDATE FLUSH")
+        assert m.send("4 RL-DO DROP RLMP @ 6 RSHIFT .").split() == [str(n // 10)]
