@@ -16,7 +16,7 @@
   155000O EQU RING        \ 155000-155377 console receive ring (256 characters)
      377O EQU RING-MASK
   155400O EQU TIB0        \ 155400-155777 terminal input buffer
-     128  EQU TIB-SIZE
+     256  EQU TIB-SIZE
   156000O EQU S-LIMIT     \ 156000-156757 data stack (grows down from S0)
   156760O EQU S0          \ 156760-156777 slack below the return stack
   157000O EQU R-LIMIT     \ 157000-157777 return stack = hardware stack
