@@ -101,3 +101,28 @@ def test_appendix_words(forth):
     assert forth.send("QUAD 2+ 1SET QUAD 2+ @ .") == "1 "
     forth.send(": COUNTDOWN 3 BEGIN DUP . 1- DUP 0= END DROP ;")
     assert forth.send("COUNTDOWN") == "3 2 1 "
+
+
+def test_priority_zero_after_boot(forth):
+    assert forth.send("177776O @ 340O AND .") == "0 "  # PSW bits 7-5
+
+
+def test_typed_ahead_lines_are_kept(forth):
+    """Receive is interrupt-driven: lines typed while a word runs are buffered."""
+    from harness.machine import OK
+    forth.send(": BUSY 30000 0 DO LOOP ;")
+    forth.child.send("BUSY\r1 2 + .\r3 4 + .\r")
+    replies = []
+    for _ in range(3):
+        forth.child.expect(OK)
+        replies.append(forth.child.before)
+    assert replies[1].endswith(" 3 ") and replies[2].endswith(" 7 ")
+
+
+def test_line_editing(forth):
+    # backspace and delete remove a character, ^U the whole line
+    # (the echo of the erasing stays in the output: check how it ends)
+    assert forth.send("1 2 +\b- .").endswith(" \b- . -1 ")
+    assert forth.send("1 2 +\x7f- .").endswith(" \b- . -1 ")
+    assert forth.send("99 DROP\x15 5 .").endswith("5 . 5 ")
+    assert forth.send("DEPTH .").endswith("0 ")
