@@ -6,6 +6,7 @@
   CR ;
 : COLD  ( -- )
   FORTH-BODY DUP CONTEXT ! CURRENT !  DECIMAL  0 HANDLER !  0 BLK !  0 STATE !
+  ['] CODE-ERROR 'ON-ERROR !
   BANNER ."  ok" CR  QUIT ;
 
 \ unexpected traps and interrupts: vector v holds STUBS+v, whose stub is

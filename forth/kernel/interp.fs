@@ -1,7 +1,7 @@
 \ forth/kernel/interp.fs: text interpreter, compiler, vocabularies, errors, QUIT.
 
 \ ---- the input source ---------------------------------------------------------
-: SOURCE  ( -- a u )  BLK @ IF BLK @ BLOCK 1024 ELSE SRC 2@ THEN ;
+: SOURCE  ( -- a u )  BLK @ IF BLK @ (BLOCK) 1024 ELSE SRC 2@ THEN ;  \ (BLOCK): disk.fs
 : REST  ( -- a u )  \ unparsed part of the source
   SOURCE >IN @ OVER MIN /STRING ;
 : PARSE  ( c -- a u )
@@ -105,9 +105,9 @@ DODOES CONSTANT 'DODOES  ( -- a )
 : COMPILE-ONLY  ( -- )  LAST @ DUP C@ 64 OR SWAP C! ;
 : SMUDGE  ( -- )  LAST @ DUP C@ 32 OR SWAP C! ;
 : REVEAL  ( -- )  LAST @ DUP C@ 32 INVERT AND SWAP C! ;
-: CREATE  ( "name" -- )  PARSE-NAME HEADER, 'DOVAR JSR-W CF, ;
+: CREATE  ( "name" -- )  ?END-CODE PARSE-NAME HEADER, 'DOVAR JSR-W CF, ;
 : VARIABLE  ( "name" -- )  CREATE 0 , ;
-: CONSTANT  ( x "name" -- )  PARSE-NAME HEADER, 'DOCON JSR-W CF, , ;
+: CONSTANT  ( x "name" -- )  ?END-CODE PARSE-NAME HEADER, 'DOCON JSR-W CF, , ;
 : CON  ( x "name" -- )  CONSTANT ;
 : VAR  ( x "name" -- )  CREATE , ;
 : ARRAY  ( n "name" -- )  CREATE CELLS DUP ALLOT HERE OVER - SWAP ERASE ;
@@ -116,8 +116,8 @@ DODOES CONSTANT 'DODOES  ( -- a )
 : VALUE  ( x "name" -- )  CONSTANT ;
 : TO  ( x "name" -- )
   ' >BODY STATE @ IF POSTPONE LITERAL ['] ! , ELSE ! THEN ;  IMMEDIATE
-: :  ( "name" -- colon-sys )
-  CURRENT @ CONTEXT !  ALIGN HERE COLON-LFA !
+: :  ( "name" -- colon-sys )  \ also ends an open CODE word (block 1008)
+  ?END-CODE  CURRENT @ CONTEXT !  ALIGN HERE COLON-LFA !
   PARSE-NAME HEADER, SMUDGE  'DOCOL JSR-IP CF,  4 ] ;
 : :NONAME  ( -- xt colon-sys )  0 COLON-LFA !  ALIGN HERE 'DOCOL JSR-IP CF, 4 ] ;
 : ;  ( colon-sys -- )
@@ -129,9 +129,4 @@ VOCABULARY FORTH  ( -- ) \ the kernel's vocabulary
 ' FORTH >BODY CONSTANT FORTH-BODY  ( -- a )
 VOCABULARY ASSEMBLER  ( -- ) \ CODE's vocabulary (resident assembler: issue 4)
 : DEFINITIONS  ( -- )  CONTEXT @ CURRENT ! ;
-: CODE  ( "name" -- )  \ header whose code field is the machine code that follows
-  PARSE-NAME HEADER,  [ ' ASSEMBLER >BODY ] LITERAL CONTEXT ! ;
-: END-CODE  ( -- )  CURRENT @ CONTEXT ! ;
-: ;CODE  ( colon-sys -- )  \ children run the code after it with W = body
-  ['] (DOES>) ,  5726O ,  4 ?PAIRS  REVEAL  POSTPONE [
-  [ ' ASSEMBLER >BODY ] LITERAL CONTEXT ! ;  IMMEDIATE COMPILE-ONLY
+\ CODE END-CODE ;CODE: forth/kernel/code.fs (they need the resident assembler)

@@ -126,3 +126,17 @@ def test_line_editing(forth):
     assert forth.send("1 2 +\x7f- .").endswith(" \b- . -1 ")
     assert forth.send("99 DROP\x15 5 .").endswith("5 . 5 ")
     assert forth.send("DEPTH .").endswith("0 ")
+
+
+def test_code_words_with_the_resident_assembler(forth):
+    forth.send("CODE TWICE S ) ASL, NEXT, END-CODE")
+    assert forth.send("21 TWICE .") == "42 "
+    # block 1008 style: the next ":" ends the CODE word
+    forth.send("CODE THRICE R0 S ) MOV, S ) R0 ADD, S ) R0 ADD, NEXT,")
+    forth.send(": NINE 3 THRICE ;")
+    assert forth.send("NINE .") == "9 "
+    r = forth.reply("CODE BAD R0 MOV,")
+    assert r.error == "wrong number of operands: MOV,"
+    assert forth.send("1 2 + .") == "3 "
+    forth.send(": KONST CREATE , ;CODE S -) W ) MOV, NEXT, END-CODE")
+    assert forth.send("5 KONST FIVE FIVE .") == "5 "
