@@ -1,0 +1,55 @@
+"""Every error class: a clear message naming the word, then the interpreter
+works again with the stacks reset and the dictionary intact."""
+import pytest
+
+
+def still_works(forth):
+    assert forth.send("DEPTH .") == "0 "
+    assert forth.send("2 3 + .") == "5 "
+
+
+@pytest.mark.parametrize("line, message, word", [
+    ("NO-SUCH-WORD", "undefined word", "NO-SUCH-WORD"),
+    ("DROP", "stack underflow", "DROP"),
+    ("IF", "compile-only word interpreted", "IF"),
+    (": BAD IF ;", "unbalanced control structure", ";"),
+    (": BAD2 BEGIN THEN ;", "unbalanced control structure", "THEN"),
+    ("1 @", "odd address for a word access", "@"),
+    ("160000O @", "bus error or odd address (vector 000004, PC", "@"),
+    ("5 0 /", "division by zero", "/"),
+    (": RUNAWAY RECURSE ; RUNAWAY", "return stack overflow", "RUNAWAY"),
+    ("HERE 10O , EXECUTE", "illegal or reserved instruction (vector 000010", "EXECUTE"),
+    ("30000 ALLOT 30000 ALLOT", "dictionary full", "ALLOT"),
+    ("-30000 ALLOT -30000 ALLOT", "invalid memory address", "ALLOT"),
+    ("10240 BLOCK", "no such block", "BLOCK"),
+])
+def test_error_then_prompt(forth, line, message, word):
+    r = forth.reply(line)
+    assert not r.ok, r
+    assert message in r.error
+    assert r.error.endswith(": " + word)
+    still_works(forth)
+
+
+def test_stack_overflow(forth):
+    for _ in range(10):  # 50 numbers a line; the stack holds about 240
+        r = forth.reply(" ".join(["7"] * 50))
+        if not r.ok:
+            break
+    assert r.error == "stack overflow: 7"
+    still_works(forth)
+
+
+def test_interrupted_definition_leaves_nothing(forth):
+    before = forth.send("HERE .")
+    assert not forth.reply(": HALF-DONE 1 2 NOWHERE").ok
+    assert forth.send("HERE .") == before
+    assert "undefined word" in forth.reply("HALF-DONE").error
+    still_works(forth)
+
+
+def test_abort_quote_message(forth):
+    forth.send(': CHECK ( n -- ) 0< ABORT" negative input" ;')
+    r = forth.reply("-3 CHECK")
+    assert r.error == "negative input: CHECK"
+    still_works(forth)

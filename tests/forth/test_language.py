@@ -1,0 +1,142 @@
+"""The kernel's own conventions: numbers, loops, vocabularies, case, tools,
+FORGET/MARKER and interrupt vectors, the banner."""
+import re
+
+
+def test_banner_names_system_memory_disk(forth):
+    assert "PDP-11/23 FORTH" in forth.banner
+    free = int(re.search(r"(\d+) bytes free", forth.banner).group(1))
+    assert free >= 20 * 1024
+    assert "RL02" in forth.banner
+    assert forth.send("UNUSED U.") == f"{free} "
+
+
+def test_numbers_octal_negative_base(forth):
+    assert forth.send("177546O .") == "-154 "
+    assert forth.send("177546O U.") == "65382 "
+    assert forth.send("-17 .") == "-17 "
+    assert forth.send("HEX 1F . 10O . DECIMAL") == "1F 8 "
+    assert forth.send("OCTAL 777 . 10 DECIMAL .") == "777 8 "
+    assert forth.send("2 BASE ! 101 DECIMAL .") == "5 "
+    assert forth.send("-32768 . 65535 U.") == "-32768 65535 "
+    assert "undefined word: 12X" in forth.reply("12X").error
+
+
+def test_plus_loop_counts_down_through_zero(forth):
+    forth.send(": DOWN 0 3 DO I . -1 +LOOP ;")
+    assert forth.send("DOWN") == "3 2 1 0 "
+    forth.send(": UP2 10 0 DO I . 3 +LOOP ;")
+    assert forth.send("UP2") == "0 3 6 9 "
+    forth.send(": NEST 2 0 DO 3 0 DO J 10 * I + . LOOP LOOP ;")
+    assert forth.send("NEST") == "0 1 2 10 11 12 "
+    forth.send(": QDO 0 ?DO I . LOOP ;")
+    assert forth.send("0 QDO 2 QDO") == "0 1 "
+
+
+def test_double_cell_and_eis(forth):
+    assert forth.send("1000 1000 UM* D.") == "1000000 "
+    assert forth.send("-1000 1000 M* D.") == "-1000000 "
+    assert forth.send("34464 1 7 UM/MOD . .") == "14285 5 "
+    assert forth.send("7 S>D 2 SM/REM . .") == "3 1 "
+    assert forth.send("-7 S>D 2 SM/REM . .") == "-3 -1 "
+    assert forth.send("-7 S>D 2 FM/MOD . .") == "-4 1 "
+    assert forth.send("100 200 300 */ .") == "66 "
+    assert forth.send("1 2 3 4 D+ D.") == "393220 "  # 0x40004 + ... = (1+3) + (2+4)*65536
+    assert forth.send("-5 S>D DABS D.") == "5 "
+    assert forth.send('S" abc" S" abd" COMPARE . S" abc" S" abc" COMPARE .') == "-1 0 "
+
+
+def test_case_insensitive_names_kept_as_written(forth):
+    forth.send(": MixedCase 42 ;")
+    assert forth.send("mixedcase . MIXEDCASE .") == "42 42 "
+    assert "MixedCase" in forth.send("WORDS")
+    assert forth.send("1 dup + .") == "2 "
+
+
+def test_vocabularies_forth79(forth):
+    forth.send("VOCABULARY TOOLS  TOOLS DEFINITIONS  : HAMMER 7 ; FORTH DEFINITIONS")
+    assert "undefined word: HAMMER" in forth.reply("HAMMER").error
+    assert forth.send("TOOLS HAMMER . FORTH") == "7 "
+    # vocabulary words are immediate: usable inside a definition
+    forth.send(": USE-HAMMER TOOLS HAMMER FORTH 1+ ;")
+    assert forth.send("USE-HAMMER .") == "8 "
+    # ":" sets CONTEXT to CURRENT
+    forth.send("TOOLS : AFTER-COLON 1 ;")
+    assert "undefined word: HAMMER" in forth.reply("HAMMER").error
+    # CODE sets CONTEXT to ASSEMBLER; END-CODE back
+    assert forth.send("CODE NOP-WORD CONTEXT @ ' ASSEMBLER >BODY = . 134O , END-CODE") == "-1 "
+    assert forth.send("NOP-WORD CONTEXT @ ' FORTH >BODY = .") == "-1 "
+
+
+def test_forget_and_marker_restore_vectors(forth):
+    forth.send("MARKER SCRATCH")
+    forth.send("CODE MY-HANDLER 2 , END-CODE")  # RTI
+    forth.send("' MY-HANDLER 300O !")
+    out = forth.send("SCRATCH")
+    assert "vector 000300 restored to its default handler" in out
+    assert forth.send("300O @ 1300O = .") == "-1 "
+    assert "undefined word" in forth.reply("MY-HANDLER").error
+    forth.send(": TEMP1 1 ; : TEMP2 2 ;")
+    forth.send("FORGET TEMP1")
+    assert "undefined word" in forth.reply("TEMP2").error
+    assert "cannot forget kernel words" in forth.reply("FORGET DUP").error
+
+
+def test_tools(forth):
+    assert forth.send("1 2 3 .S DROP DROP DROP") == "<3> 1 2 3 "
+    forth.send(": SQUARE DUP * ;")
+    assert "SQUARE is : DUP * EXIT ;" in forth.send("SEE SQUARE")
+    assert "is CODE at" in forth.send("SEE DUP")
+    assert "CONSTANT 32" in forth.send("SEE BL")
+    assert re.search(r"48 +49 +50 .*012", forth.send('S" 012" DROP 3 DUMP'))
+    forth.send("VARIABLE V  5 V !  3 V +!")
+    assert forth.send("V @ . V ?") == "8 8 "
+    forth.send("5 VALUE FIVE  7 TO FIVE")
+    assert forth.send("FIVE .") == "7 "
+
+
+def test_appendix_words(forth):
+    forth.send("3 CON THREE  9 VAR NINE  4 ARRAY QUAD")
+    assert forth.send("THREE . NINE @ . QUAD 6 + @ .") == "3 9 0 "
+    assert forth.send("QUAD 2+ 1SET QUAD 2+ @ .") == "1 "
+    forth.send(": COUNTDOWN 3 BEGIN DUP . 1- DUP 0= END DROP ;")
+    assert forth.send("COUNTDOWN") == "3 2 1 "
+
+
+def test_priority_zero_after_boot(forth):
+    assert forth.send("177776O @ 340O AND .") == "0 "  # PSW bits 7-5
+
+
+def test_typed_ahead_lines_are_kept(forth):
+    """Receive is interrupt-driven: lines typed while a word runs are buffered."""
+    from harness.machine import OK
+    forth.send(": BUSY 30000 0 DO LOOP ;")
+    forth.child.send("BUSY\r1 2 + .\r3 4 + .\r")
+    replies = []
+    for _ in range(3):
+        forth.child.expect(OK)
+        replies.append(forth.child.before)
+    assert replies[1].endswith(" 3 ") and replies[2].endswith(" 7 ")
+
+
+def test_line_editing(forth):
+    # backspace and delete remove a character, ^U the whole line
+    # (the echo of the erasing stays in the output: check how it ends)
+    assert forth.send("1 2 +\b- .").endswith(" \b- . -1 ")
+    assert forth.send("1 2 +\x7f- .").endswith(" \b- . -1 ")
+    assert forth.send("99 DROP\x15 5 .").endswith("5 . 5 ")
+    assert forth.send("DEPTH .").endswith("0 ")
+
+
+def test_code_words_with_the_resident_assembler(forth):
+    forth.send("CODE TWICE S ) ASL, NEXT, END-CODE")
+    assert forth.send("21 TWICE .") == "42 "
+    # block 1008 style: the next ":" ends the CODE word
+    forth.send("CODE THRICE R0 S ) MOV, S ) R0 ADD, S ) R0 ADD, NEXT,")
+    forth.send(": NINE 3 THRICE ;")
+    assert forth.send("NINE .") == "9 "
+    r = forth.reply("CODE BAD R0 MOV,")
+    assert r.error == "wrong number of operands: MOV,"
+    assert forth.send("1 2 + .") == "3 "
+    forth.send(": KONST CREATE , ;CODE S -) W ) MOV, NEXT, END-CODE")
+    assert forth.send("5 KONST FIVE FIVE .") == "5 "
