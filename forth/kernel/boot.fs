@@ -1,0 +1,29 @@
+\ forth/kernel/boot.fs: the entry point and the banner.
+
+: BANNER  ( -- )
+  CR ." PDP-11/23 FORTH (metacompiled on gforth) for the UMass LPR Cartesian robot"
+  CR UNUSED U. ." bytes free.  Disk: RL02 on the RLV12 at 174400, blocks 0-10239."
+  CR ;
+: COLD  ( -- )
+  FORTH-BODY DUP CONTEXT ! CURRENT !  DECIMAL  0 HANDLER !  0 BLK !  0 STATE !
+  BANNER ."  ok" CR  QUIT ;
+
+\ unexpected traps and interrupts: vector v holds STUBS+v, whose stub is
+\ JSR R0,@#TRAPPED; the vector is recovered from R0, the trap frame dropped,
+\ priority 0, and the interpreter's error path entered with -256 THROW.
+LABEL TRAPPED
+  R0 STUBS 4 + # SUB,  TRAP-VEC @# R0 MOV,
+  RP )+ TST,  TRAP-PC @# RP )+ MOV,  RP )+ TST,
+  0 # MTPS,  S S0 # MOV,  S -) -256 # MOV,
+  IP HERE 6 + # MOV,  NEXT,  ' THROW ,  END-CODE
+LABEL TICK  ( line clock, vector 100: nothing to do until a servo is installed )
+  RTI,  END-CODE
+
+\ Machine entry (the start address in build/kernel.lda): stacks, console
+\ receive interrupt on, priority 0, then the thread holding COLD.
+LABEL ENTRY
+  340O # MTPS,  RP RP0 # MOV,  S S0 # MOV,
+  RXHEAD @# CLR,  RXTAIL @# CLR,  RXLOST @# CLR,  THROW-CELL @# ' THROW # MOV,
+  177560O @# 100O # MOV,
+  0 # MTPS,
+  IP HERE 6 + # MOV,  NEXT,  ' COLD ,  END-CODE

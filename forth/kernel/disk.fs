@@ -1,0 +1,144 @@
+\ disk.fs: the RL02 driver and the block word set (BLOCK BUFFER UPDATE
+\ SAVE-BUFFERS EMPTY-BUFFERS FLUSH LOAD THRU --> ;S LIST INDEX SCR).
+\
+\ RLV12 registers (DEC RLV12 user's guide; SIMH PDP11/pdp11_rl.c):
+\   CSR 174400  bit 0 DRDY drive ready; bits 3:1 function; bit 6 IE;
+\               bit 7 CRDY controller ready: writing the CSR with CRDY 0
+\               starts the function; bits 9:8 drive; errors: bit 10 OPI
+\               operation incomplete, 11 DCRC check/data late, 12 HNF header
+\               not found, 13 NXM, 14 DE drive error, 15 CE any error.
+\   BAR 174402  bus address of the transfer.
+\   DAR 174404  read/write: cylinder<<7 | head<<6 | sector;
+\               seek: difference<<7 | head<<4 | 4 (towards higher
+\               cylinders) | 1; get status: 3, plus 8 to reset drive errors.
+\   MPR 174406  before a transfer: minus the word count; after get status:
+\               the drive status; after read header: the header word
+\               (cylinder<<7 | head<<6 | sector) of the track under the heads.
+\ Functions: 2 get status, 3 seek, 4 read header, 5 write data, 6 read data.
+\ RL02: 512 cylinders x 2 heads x 40 sectors of 256 bytes = 10 MB.
+\ Block n (1024 bytes) = sectors 4n..4n+3: track n/10 (cylinder = track/2,
+\ head = track and 1), first sector 4*(n mod 10). A track holds exactly 10
+\ blocks, so a block never crosses a track, and the controller (which never
+\ switches heads or cylinders within a transfer) moves it in one operation.
+\
+\ The driver is polled, at the caller's priority (normally 0): BLOCK has
+\ to wait for its data anyway and the FORTH has nothing else to run, while
+\ the 60 Hz servo interrupt keeps being served during the wait. An
+\ interrupt-driven driver would only pay off with a multitasker.
+
+DECIMAL
+174400O CONSTANT RLCS    174402O CONSTANT RLBA
+174404O CONSTANT RLDA    174406O CONSTANT RLMP
+10240 CONSTANT #BLOCKS           \ blocks on an RL02 (40960 sectors / 4)
+1024 CONSTANT B/BUF              \ bytes per block
+VARIABLE #READS   VARIABLE #WRITES   \ transfers done: LRU tests, statistics
+VARIABLE RL-BLK                  \ block of the transfer under way, for messages
+VARIABLE RL-FN                   \ its function: 5 write, 6 read
+: RL-THROW ( -- ) RL-FN @ 5 = IF -34 ELSE -33 THEN THROW ; \ write/read error
+
+\ ---- messages ------------------------------------------------------------
+: ?.BIT ( x mask c-addr u -- x ) \ print the name when the bit is set
+   >R >R OVER AND IF SPACE R> R> TYPE ELSE R> R> 2DROP THEN ;
+: .CSR ( csr -- ) \ controller status, octal, then its error bits by name
+   ."  CSR=" DUP .OCTAL
+   2000O S" incomplete" ?.BIT   4000O S" data-check" ?.BIT
+   10000O S" header-not-found" ?.BIT   20000O S" no-memory" ?.BIT
+   40000O S" drive-error" ?.BIT  DROP ;
+: .DRIVE ( status -- ) \ drive status (MPR after get status), decoded
+   ."  drive=" DUP .OCTAL
+   DUP 7 AND 5 <> IF ."  not-ready" THEN
+   40O S" cover-open" ?.BIT   400O S" select-error" ?.BIT
+   1000O S" volume-check" ?.BIT   2000O S" write-gate-error" ?.BIT
+   4000O S" spin-error" ?.BIT   10000O S" seek-timeout" ?.BIT
+   20000O S" write-locked" ?.BIT   40000O S" head-current-error" ?.BIT
+   100000O S" write-data-error" ?.BIT  DROP ;
+: .RL-BLOCK ( -- ) \ start of every driver message: which transfer failed
+   CR ." RL0 block " RL-BLK @ U. RL-FN @ 5 = IF ." write " ELSE ." read " THEN ;
+
+\ ---- the controller --------------------------------------------------------
+: RL-READY? ( -- f ) RLCS @ 201O AND 201O = ;  \ controller and drive ready
+: RL-WAIT ( -- ) \ poll until ready; a dead controller is an error, not a hang
+   0 BEGIN RL-READY? 0= WHILE 1+ DUP 0= IF
+      DROP .RL-BLOCK ." timed out:" RLCS @ .CSR RL-THROW THEN
+   REPEAT DROP ;
+: RL-DO ( fn -- csr ) 2* RLCS ! RL-WAIT RLCS @ ;  \ run a function on drive 0
+: RL-STATUS ( dar -- status ) RLDA ! 2 RL-DO DROP RLMP @ ; \ get status
+: RL-FAIL ( csr -- ) \ report a failed function with the drive status, abort
+   .RL-BLOCK ." failed:" .CSR 3 RL-STATUS .DRIVE RL-THROW ;
+: ?RL-OK ( csr -- ) DUP 0< IF RL-FAIL THEN DROP ;
+: RL-CHECK ( write? -- ) \ the drive must be loaded, spinning and, for a write,
+   13O RL-STATUS              \ not locked; get status also clears volume check
+   DUP 7 AND 5 <> ROT IF OVER 20000O AND OR THEN
+   IF .RL-BLOCK ." not ready:" .DRIVE RL-THROW THEN DROP ;
+: RL-CYL ( -- cyl ) 4 RL-DO ?RL-OK RLMP @ 7 RSHIFT ; \ read header: where heads are
+: RL-DA ( blk -- da ) 10 /MOD 64 * SWAP 4 * + ;  \ track<<6 | first sector
+: RL-SEEK ( da -- ) \ move the heads to the cylinder and head of da
+   DUP 7 RSHIFT RL-CYL -
+   DUP 0< IF NEGATE 7 LSHIFT 1 OR ELSE 7 LSHIFT 5 OR THEN
+   SWAP 64 AND IF 16 OR THEN
+   RLDA ! 3 RL-DO ?RL-OK ;
+: ?BLOCK# ( blk -- blk ) \ a block past the end of the disk is an error
+   DUP #BLOCKS U< 0= IF CR ." block " DUP U. ." is past the end of the disk (0.."
+      #BLOCKS 1- 0 U.R ." )" -35 THROW THEN ;
+: RL-XFER ( addr blk fn -- ) \ fn 5 writes, 6 reads block blk at addr
+   DUP RL-FN ! >R ?BLOCK# DUP RL-BLK ! R@ 5 = RL-CHECK
+   RL-DA DUP RL-SEEK RLDA ! RLBA ! B/BUF 2/ NEGATE RLMP ! R> RL-DO ?RL-OK ;
+: RL-READ ( addr blk -- ) 6 RL-XFER 1 #READS +! ;
+: RL-WRITE ( addr blk -- ) 5 RL-XFER 1 #WRITES +! ;
+
+\ ---- block buffers: 4, least recently used first out --------------------
+\ The data live in the kernel's BUFFERS area (forth/kernel/memory.fs, above the
+\ dictionary); the tables below are in the image, so every boot starts empty.
+4 CONSTANT #BUFS                 \ the four-entry tables below follow from it
+CREATE BUF-BLK   -1 , -1 , -1 , -1 ,   \ block in each buffer, -1 = none
+CREATE BUF-UPD    0 ,  0 ,  0 ,  0 ,   \ true when the buffer was UPDATEd
+CREATE BUF-MRU    0 ,  1 ,  2 ,  3 ,   \ buffer numbers, most recent first
+: BUF-ADDR ( i -- addr ) B/BUF * BUFFERS + ;
+: >BLK ( i -- addr ) 2* BUF-BLK + ;
+: >UPD ( i -- addr ) 2* BUF-UPD + ;
+: TOUCH ( i -- ) \ make buffer i the most recently used
+   BUF-MRU BEGIN 2DUP @ <> WHILE 2 + REPEAT
+   BEGIN DUP BUF-MRU <> WHILE DUP 2 - @ OVER ! 2 - REPEAT ! ;
+: RESIDENT ( blk -- i | -1 ) \ the buffer holding blk, or -1
+   #BUFS 0 DO DUP I >BLK @ = IF DROP I UNLOOP EXIT THEN LOOP DROP -1 ;
+: WRITE-BACK ( i -- ) \ write buffer i to disk if UPDATEd
+   DUP >UPD @ IF DUP BUF-ADDR OVER >BLK @ RL-WRITE 0 OVER >UPD ! THEN DROP ;
+: FREE-BUF ( -- i ) \ the least recently used buffer, written back, unassigned
+   BUF-MRU #BUFS 1- 2* + @ DUP WRITE-BACK -1 OVER >BLK ! ;
+: BUFFER ( blk -- addr ) \ assign a buffer to blk, contents undefined
+   ?BLOCK# DUP RESIDENT DUP 0< IF DROP FREE-BUF THEN
+   TUCK >BLK ! DUP TOUCH BUF-ADDR ;
+: BLOCK ( blk -- addr ) \ the buffer holding blk, read from disk if needed
+   ?BLOCK# DUP RESIDENT DUP 0< IF DROP FREE-BUF 2DUP BUF-ADDR SWAP RL-READ THEN
+   TUCK >BLK ! DUP TOUCH BUF-ADDR ;
+: UPDATE ( -- ) \ mark the most recently used block buffer as changed
+   BUF-MRU @ DUP >BLK @ 0< ABORT" UPDATE: no current block"
+   TRUE SWAP >UPD ! ;
+: SAVE-BUFFERS ( -- ) #BUFS 0 DO I WRITE-BACK LOOP ;
+: EMPTY-BUFFERS ( -- ) #BUFS 0 DO -1 I >BLK ! 0 I >UPD ! LOOP ;
+: FLUSH ( -- ) SAVE-BUFFERS EMPTY-BUFFERS ;
+
+\ ---- loading ---------------------------------------------------------------
+: LOAD ( blk -- ) \ interpret block blk, then continue where we were
+   DUP 0= ABORT" block 0 cannot be loaded"
+   DUP BLOCK DROP                    \ a bad block fails here, source unchanged
+   BLK @ >R >IN @ >R SOURCE-ID @ >R  BLK ! 0 >IN ! 0 SOURCE-ID !
+   INTERPRET  R> SOURCE-ID ! R> >IN ! R> BLK ! ;
+: THRU ( blk1 blk2 -- ) 1+ SWAP ?DO I LOAD LOOP ;
+: --> ( -- ) \ continue loading with the next block
+   BLK @ 0= ABORT" --> outside a loaded block"  1 BLK +! 0 >IN ! ; IMMEDIATE
+: ;S ( -- ) \ interpreting: stop loading this block; compiling: EXIT (fig)
+   STATE @ IF POSTPONE EXIT ELSE SOURCE NIP >IN ! THEN ; IMMEDIATE
+
+\ ---- listing -------------------------------------------------------------
+VARIABLE SCR                     \ the block last listed (the editor's block)
+: -BLANKS ( addr len -- addr len' ) \ drop trailing blanks and control chars
+   BEGIN DUP IF 2DUP + 1- C@ BL > 0= ELSE FALSE THEN WHILE 1- REPEAT ;
+: .LINE ( addr -- ) \ type a 64-character line, control characters as blanks
+   64 -BLANKS 0 ?DO DUP I + C@ DUP BL 127 WITHIN 0= IF DROP BL THEN EMIT LOOP
+   DROP ;
+: LIST ( blk -- ) \ show block blk with line numbers, make it SCR
+   DUP BLOCK DROP DUP SCR ! CR ." Block " DUP U.
+   16 0 DO CR I 2 U.R SPACE DUP BLOCK I 64 * + .LINE LOOP DROP CR ;
+: INDEX ( blk1 blk2 -- ) \ the first line of each block blk1..blk2
+   1+ SWAP ?DO CR I 5 U.R SPACE I BLOCK .LINE LOOP CR ;

@@ -1,0 +1,2 @@
+\ forth/kernel/nodisk.fs: used only while forth/kernel/disk.fs does not exist.
+: BLOCK  ( n -- a )  DROP -35 THROW ;

@@ -1,0 +1,214 @@
+\ forth/kernel/prims.fs: code-field handlers, traps, console, primitives.
+\ Registers: R0 T=R1 W=R2 R3 scratch; IP=R4; S=R5 data stack (TOS at (S), no
+\ cache); RP=R6 return stack = hardware stack. NEXT = JMP @(IP)+.
+\ Code fields: colon  JSR IP,@#DOCOL  (pushes IP, IP = thread, then NEXT)
+\              others JSR W,@#handler (W = parameter field, old W pushed)
+
+\ DOCOL also guards the return stack: a runaway recursion is error -5 before it
+\ can overwrite the data stack and the dictionary below it
+LABEL DOCOL  ( -- )
+  R-LIMIT 40 + # RP CMP,  LO IF,  RP R-LIMIT 200 + # MOV,  -5 THROW,  THEN,  NEXT,  END-CODE
+LABEL DOVAR  ( -- a )  S -) W MOV,  RP )+ TST,  NEXT,  END-CODE
+LABEL DOCON  ( -- x )  S -) W ) MOV,  RP )+ TST,  NEXT,  END-CODE
+\ DOES> code is JSR IP,@#DODOES: return stack = IP, old W; W = body
+LABEL DODOES  ( -- a )  S -) W MOV,  RP ) RP )+ MOV,  NEXT,  END-CODE
+
+CODE EXIT  ( -- ) ( R: ip -- )  IP RP )+ MOV,  NEXT,  END-CODE  COMPILE-ONLY
+CODE (LIT)  ( -- x )  S -) IP )+ MOV,  NEXT,  END-CODE
+CODE BRANCH  ( -- )  IP IP ) MOV,  NEXT,  END-CODE
+CODE ?BRANCH  ( f -- )
+  S )+ TST,  EQ IF,  IP IP ) MOV,  NEXT,  THEN,  IP )+ TST,  NEXT,  END-CODE
+CODE EXECUTE  ( xt -- )  R0 S )+ MOV,  R0 ) JMP,  END-CODE
+
+\ DO loops. Return stack: leave address, bias = 100000-limit, index+bias.
+\ Adding to index+bias overflows (V) exactly when the index crosses the
+\ boundary between limit-1 and limit, in either direction (Forth-94 +LOOP).
+CODE (DO)  ( limit start -- )
+  RP -) IP )+ MOV,  R0 100000O # MOV,  R0 2 S I) SUB,  RP -) R0 MOV,
+  R0 S )+ ADD,  S )+ TST,  RP -) R0 MOV,  NEXT,  END-CODE
+CODE (?DO)  ( limit start -- )
+  S ) 2 S I) CMP,  EQ IF,  S 4 # ADD,  IP IP ) MOV,  NEXT,  THEN,
+  ' (DO) @# JMP,  END-CODE
+CODE (LOOP)  ( -- )
+  RP ) INC,  VS IF,  RP 6 # ADD,  IP )+ TST,  NEXT,  THEN,  IP IP ) MOV,  NEXT,
+  END-CODE
+CODE (+LOOP)  ( n -- )
+  RP ) S )+ ADD,  VS IF,  RP 6 # ADD,  IP )+ TST,  NEXT,  THEN,  IP IP ) MOV,  NEXT,
+  END-CODE
+CODE I  ( -- n )  R0 RP ) MOV,  R0 2 RP I) SUB,  S -) R0 MOV,  NEXT,  END-CODE  COMPILE-ONLY
+CODE J  ( -- n )  R0 6 RP I) MOV,  R0 10O RP I) SUB,  S -) R0 MOV,  NEXT,  END-CODE  COMPILE-ONLY
+CODE LEAVE  ( -- )  RP 4 # ADD,  IP RP )+ MOV,  NEXT,  END-CODE  COMPILE-ONLY
+CODE UNLOOP  ( -- )  RP 6 # ADD,  NEXT,  END-CODE  COMPILE-ONLY
+
+\ stack
+CODE DUP  ( x -- x x )  S -) S ) MOV,  NEXT,  END-CODE
+CODE DROP  ( x -- )  S 2 # ADD,  NEXT,  END-CODE
+CODE SWAP  ( a b -- b a )  R0 S ) MOV,  S ) 2 S I) MOV,  2 S I) R0 MOV,  NEXT,  END-CODE
+CODE OVER  ( a b -- a b a )  S -) 2 S I) MOV,  NEXT,  END-CODE
+CODE ROT  ( a b c -- b c a )
+  R0 4 S I) MOV,  4 S I) 2 S I) MOV,  2 S I) S ) MOV,  S ) R0 MOV,  NEXT,  END-CODE
+CODE NIP  ( a b -- b )  R0 S )+ MOV,  S ) R0 MOV,  NEXT,  END-CODE
+CODE TUCK  ( a b -- b a b )
+  R0 S ) MOV,  S ) 2 S I) MOV,  2 S I) R0 MOV,  S -) R0 MOV,  NEXT,  END-CODE
+CODE ?DUP  ( x -- 0 | x x )  S ) TST,  NE IF,  S -) S ) MOV,  THEN,  NEXT,  END-CODE
+CODE 2DUP  ( a b -- a b a b )  S -) 2 S I) MOV,  S -) 2 S I) MOV,  NEXT,  END-CODE
+CODE 2DROP  ( a b -- )  S 4 # ADD,  NEXT,  END-CODE
+CODE 2SWAP  ( a b c d -- c d a b )
+  R0 S ) MOV,  S ) 4 S I) MOV,  4 S I) R0 MOV,
+  R0 2 S I) MOV,  2 S I) 6 S I) MOV,  6 S I) R0 MOV,  NEXT,  END-CODE
+CODE 2OVER  ( a b c d -- a b c d a b )  S -) 6 S I) MOV,  S -) 6 S I) MOV,  NEXT,  END-CODE
+CODE PICK  ( xu .. x0 u -- xu .. x0 xu )
+  R0 S ) MOV,  R0 R0 ADD,  R0 S ADD,  S ) 2 R0 I) MOV,  NEXT,  END-CODE
+CODE >R  ( x -- ) ( R: -- x )  RP -) S )+ MOV,  NEXT,  END-CODE  COMPILE-ONLY
+CODE R>  ( -- x ) ( R: x -- )  S -) RP )+ MOV,  NEXT,  END-CODE  COMPILE-ONLY
+CODE R@  ( -- x ) ( R: x -- x )  S -) RP ) MOV,  NEXT,  END-CODE  COMPILE-ONLY
+CODE 2>R  ( a b -- ) ( R: -- a b )  RP -) 2 S I) MOV,  RP -) S ) MOV,  S 4 # ADD,  NEXT,
+  END-CODE  COMPILE-ONLY
+CODE 2R>  ( -- a b ) ( R: a b -- )  S -) 2 RP I) MOV,  S -) RP ) MOV,  RP 4 # ADD,  NEXT,
+  END-CODE  COMPILE-ONLY
+CODE SP@  ( -- a )  R0 S MOV,  S -) R0 MOV,  NEXT,  END-CODE
+CODE SP!  ( a -- )  S S ) MOV,  NEXT,  END-CODE
+CODE RP@  ( -- a )  S -) RP MOV,  NEXT,  END-CODE
+CODE RP!  ( a -- )  RP S )+ MOV,  NEXT,  END-CODE
+CODE DEPTH  ( -- n )  R0 S0 # MOV,  R0 S SUB,  R0 ASR,  S -) R0 MOV,  NEXT,  END-CODE
+
+\ arithmetic and logic
+CODE +  ( a b -- a+b )  S ) S )+ ADD,  NEXT,  END-CODE
+CODE -  ( a b -- a-b )  S ) S )+ SUB,  NEXT,  END-CODE
+CODE AND  ( a b -- a&b )  R0 S )+ MOV,  R0 COM,  S ) R0 BIC,  NEXT,  END-CODE
+CODE OR  ( a b -- a|b )  S ) S )+ BIS,  NEXT,  END-CODE
+CODE XOR  ( a b -- a^b )  R0 S )+ MOV,  S ) R0 XOR,  NEXT,  END-CODE
+CODE INVERT  ( x -- ~x )  S ) COM,  NEXT,  END-CODE
+CODE NEGATE  ( n -- -n )  S ) NEG,  NEXT,  END-CODE
+CODE 1+  ( n -- n+1 )  S ) INC,  NEXT,  END-CODE
+CODE 1-  ( n -- n-1 )  S ) DEC,  NEXT,  END-CODE
+CODE 2+  ( n -- n+2 )  S ) 2 # ADD,  NEXT,  END-CODE
+CODE 2-  ( n -- n-2 )  S ) 2 # SUB,  NEXT,  END-CODE
+CODE 2*  ( x -- x*2 )  S ) ASL,  NEXT,  END-CODE
+CODE 2/  ( x -- x/2 )  S ) ASR,  NEXT,  END-CODE
+CODE LSHIFT  ( x u -- x' )
+  R0 S )+ MOV,  NE IF,  BEGIN,  S ) ASL,  R0 DEC,  EQ UNTIL,  THEN,  NEXT,  END-CODE
+CODE RSHIFT  ( x u -- x' )
+  R0 S )+ MOV,  NE IF,  BEGIN,  CLC,  S ) ROR,  R0 DEC,  EQ UNTIL,  THEN,  NEXT,  END-CODE
+CODE =  ( a b -- f )  EQ BINCMP,  END-CODE
+CODE <>  ( a b -- f )  NE BINCMP,  END-CODE
+CODE <  ( a b -- f )  LT BINCMP,  END-CODE
+CODE >  ( a b -- f )  GT BINCMP,  END-CODE
+CODE U<  ( a b -- f )  LO BINCMP,  END-CODE
+CODE U>  ( a b -- f )  HI BINCMP,  END-CODE
+CODE 0=  ( x -- f )  EQ UNCMP,  END-CODE
+CODE 0<>  ( x -- f )  NE UNCMP,  END-CODE
+CODE 0<  ( n -- f )  MI UNCMP,  END-CODE
+CODE 0>  ( n -- f )  GT UNCMP,  END-CODE
+
+\ EIS multiply and divide (MUL/DIV on an even register: R0 high, R1 low)
+CODE *  ( a b -- a*b )  R0 S )+ MOV,  R0 S ) MUL,  S ) T MOV,  NEXT,  END-CODE
+CODE M*  ( a b -- d )  R0 S ) MOV,  R0 2 S I) MUL,  2 S I) T MOV,  S ) R0 MOV,  NEXT,
+  END-CODE
+CODE UM*  ( u1 u2 -- ud )  \ signed MUL, then add back what the signs took away
+  R0 S ) MOV,  R0 2 S I) MUL,
+  S ) TST,  MI IF,  R0 2 S I) ADD,  THEN,
+  2 S I) TST,  MI IF,  R0 S ) ADD,  THEN,
+  2 S I) T MOV,  S ) R0 MOV,  NEXT,  END-CODE
+CODE SM/REM  ( d n -- rem quot )  \ symmetric: DIV's own rounding
+  S ) TST,  EQ IF,  -10 THROW,  THEN,
+  R0 2 S I) MOV,  T 4 S I) MOV,  R0 S )+ DIV,  2 S I) T MOV,  S ) R0 MOV,  NEXT,
+  END-CODE
+CODE UM/MOD  ( ud u -- rem quot )  \ unsigned: 16 shift-and-subtract steps
+  S ) TST,  EQ IF,  -10 THROW,  THEN,
+  W S )+ MOV,  R0 S )+ MOV,  T S ) MOV,  R3 16 # MOV,
+  BEGIN,
+    T ASL,  R0 ROL,
+    CS IF,  R0 W SUB,  T INC,
+    ELSE,  W R0 CMP,  HIS IF,  R0 W SUB,  T INC,  THEN,
+    THEN,
+    R3 DEC,
+  EQ UNTIL,
+  S ) R0 MOV,  S -) T MOV,  NEXT,  END-CODE
+CODE D+  ( d1 d2 -- d )
+  R0 S )+ MOV,  T S )+ MOV,  2 S I) T ADD,  S ) ADC,  S ) R0 ADD,  NEXT,  END-CODE
+CODE DNEGATE  ( d -- -d )  S ) NEG,  2 S I) NEG,  S ) SBC,  NEXT,  END-CODE
+
+\ memory
+CODE @  ( a -- x )  R0 S ) MOV,  ?ODD,  S ) R0 ) MOV,  NEXT,  END-CODE
+CODE !  ( x a -- )  R0 S ) MOV,  ?ODD,  S 2 # ADD,  R0 ) S )+ MOV,  NEXT,  END-CODE
+CODE C@  ( a -- c )  R0 S ) MOV,  S ) CLR,  S ) R0 ) MOVB,  NEXT,  END-CODE
+CODE C!  ( c a -- )  R0 S )+ MOV,  T S )+ MOV,  R0 ) T MOVB,  NEXT,  END-CODE
+CODE +!  ( n a -- )  R0 S ) MOV,  ?ODD,  S 2 # ADD,  R0 ) S )+ ADD,  NEXT,  END-CODE
+CODE 2@  ( a -- x1 x2 )  R0 S ) MOV,  ?ODD,  S ) 2 R0 I) MOV,  S -) R0 ) MOV,  NEXT,  END-CODE
+CODE 2!  ( x1 x2 a -- )  R0 S ) MOV,  ?ODD,  S 2 # ADD,  R0 )+ S )+ MOV,  R0 ) S )+ MOV,  NEXT,  END-CODE
+CODE 1SET  ( a -- )  R0 S )+ MOV,  R0 ) 1 # MOV,  NEXT,  END-CODE
+CODE CMOVE  ( src dst n -- )
+  T S )+ MOV,  W S )+ MOV,  R0 S )+ MOV,
+  T TST,  NE IF,  BEGIN,  W )+ R0 )+ MOVB,  T DEC,  EQ UNTIL,  THEN,  NEXT,  END-CODE
+CODE CMOVE>  ( src dst n -- )
+  T S )+ MOV,  W S )+ MOV,  R0 S )+ MOV,  W T ADD,  R0 T ADD,
+  T TST,  NE IF,  R3 T MOV,  BEGIN,  W -) R0 -) MOVB,  R3 DEC,  EQ UNTIL,  THEN,
+  NEXT,  END-CODE
+CODE FILL  ( a n c -- )
+  R0 S )+ MOV,  T S )+ MOV,  W S )+ MOV,
+  T TST,  NE IF,  BEGIN,  W )+ R0 MOVB,  T DEC,  EQ UNTIL,  THEN,  NEXT,  END-CODE
+
+\ parsing helpers: with a blank delimiter any control character is a blank
+CODE SCAN  ( a u c -- a' u' )  \ first c, or the end
+  R0 S )+ MOV,  T S ) MOV,  W 2 S I) MOV,
+  BEGIN,
+    T TST,  EQ IF,  2 S I) W MOV,  S ) T MOV,  NEXT,  THEN,
+    BLANKCHAR,  R3 R0 CMP,  EQ IF,  2 S I) W MOV,  S ) T MOV,  NEXT,  THEN,
+    W INC,  T DEC,
+  AGAIN,  END-CODE
+CODE SKIP  ( a u c -- a' u' )  \ first character not c, or the end
+  R0 S )+ MOV,  T S ) MOV,  W 2 S I) MOV,
+  BEGIN,
+    T TST,  EQ IF,  2 S I) W MOV,  S ) T MOV,  NEXT,  THEN,
+    BLANKCHAR,  R3 R0 CMP,  NE IF,  2 S I) W MOV,  S ) T MOV,  NEXT,  THEN,
+    W INC,  T DEC,
+  AGAIN,  END-CODE
+
+\ (FIND): search one vocabulary chain, case-insensitively; smudged words
+\ never match (bit 5 stays in the compared length)
+CODE (FIND)  ( a u lfa -- nfa | 0 )
+  W S )+ MOV,  RP -) IP MOV,
+  BEGIN,
+    W TST,  NE WHILE,
+    R0 2 W I) MOVB,  R0 177700O # BIC,
+    R0 S ) CMP,  EQ IF,
+      RP -) W MOV,  R3 2 S I) MOV,  IP W MOV,  IP 3 # ADD,
+      BEGIN,
+        T R3 )+ MOVB,  W IP )+ MOVB,
+        T W CMP,  NE IF,
+          141O # T CMP,  GE IF,  172O # T CMP,  LE IF,  T 40O # SUB,  THEN,  THEN,
+          141O # W CMP,  GE IF,  172O # W CMP,  LE IF,  W 40O # SUB,  THEN,  THEN,
+          T W CMP,
+        THEN,
+      EQ WHILE,
+        R0 DEC,
+        EQ IF,
+          W RP )+ MOV,  IP RP )+ MOV,  S 2 # ADD,  S ) W MOV,  S ) 2 # ADD,  NEXT,
+        THEN,
+      REPEAT,
+      W RP )+ MOV,
+    THEN,
+    W W ) MOV,
+  REPEAT,
+  IP RP )+ MOV,  S 2 # ADD,  S ) CLR,  NEXT,  END-CODE
+
+\ console (DL11 at 177560): receive by interrupt into a 256-character ring;
+\ when the ring is full further characters are dropped and counted (RXLOST)
+LABEL RXINT
+  RP -) R0 MOV,  RP -) T MOV,  RP -) W MOV,
+  R0 177562O @# MOV,  R0 177600O # BIC,
+  W RXHEAD @# MOV,  T W MOV,  T INC,  T RING-MASK INVERT # BIC,
+  T RXTAIL @# CMP,
+  EQ IF,  RXLOST @# INC,  ELSE,  RING W I) R0 MOVB,  RXHEAD @# T MOV,  THEN,
+  W RP )+ MOV,  T RP )+ MOV,  R0 RP )+ MOV,  RTI,  END-CODE
+CODE KEY?  ( -- f )
+  T CLR,  RXTAIL @# RXHEAD @# CMP,  NE IF,  T DEC,  THEN,  S -) T MOV,  NEXT,  END-CODE
+CODE KEY  ( -- c )
+  BEGIN,  RXTAIL @# RXHEAD @# CMP,  NE UNTIL,
+  W RXTAIL @# MOV,  S -) CLR,  S ) RING W I) MOVB,
+  W INC,  W RING-MASK INVERT # BIC,  RXTAIL @# W MOV,  NEXT,  END-CODE
+CODE EMIT  ( c -- )
+  BEGIN,  177564O @# 200O # BIT,  NE UNTIL,  R0 S )+ MOV,  177566O @# R0 MOV,  NEXT,
+  END-CODE
+

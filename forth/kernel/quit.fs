@@ -1,0 +1,89 @@
+\ forth/kernel/quit.fs: the outer interpreter, EVALUATE, error reports, QUIT.
+
+S-LIMIT CONSTANT S-LIMIT  ( -- a )
+2 ARRAY WHAT  ( -- a ) \ the word being interpreted: address, length
+VARIABLE 'ON-ERROR  ( -- a ) \ xt run after every error (0 = none)
+: ?STACK  ( -- )
+  SP@ S0 U> IF -4 THROW THEN  SP@ S-LIMIT 16 + U< IF -3 THROW THEN ;
+: INTERPRET  ( -- )
+  BEGIN PARSE-NAME DUP WHILE
+    2DUP WHAT 2!  2DUP SEARCH-NAME ?DUP IF
+      NIP NIP DUP NAME> SWAP C@
+      STATE @ IF 128 AND IF EXECUTE ELSE , THEN
+      ELSE 64 AND IF -14 THROW THEN EXECUTE THEN
+    ELSE NUMBER? IF STATE @ IF POSTPONE LITERAL THEN ELSE -13 THROW THEN THEN
+    ?STACK
+  REPEAT 2DROP ;
+: EVALUATE  ( a u -- )
+  SRC 2@ 2>R  >IN @ >R  BLK @ >R  SOURCE-ID @ >R
+  SRC 2!  0 >IN !  0 BLK !  -1 SOURCE-ID !  INTERPRET
+  R> SOURCE-ID !  R> BLK !  R> >IN !  2R> SRC 2! ;
+
+\ ---- reverse lookup: which word holds an address -----------------------------------
+: VOCS  ( -- a )  VOC-LINK ;  \ chain of vocabulary link cells (body+2)
+VARIABLE BEST  ( -- a )
+: WORD-AT  ( addr -- nfa | 0 )  \ the word whose code or body holds addr
+  0 BEST !  VOC-LINK @ BEGIN ?DUP WHILE
+    DUP 2- @ BEGIN ?DUP WHILE
+      DUP 2+ NAME> 3 PICK SWAP U< 0= IF
+        DUP 2+ NAME> BEST @ ?DUP IF NAME> U> ELSE DROP TRUE THEN
+        IF DUP 2+ BEST ! THEN
+      THEN @
+    REPEAT @
+  REPEAT DROP BEST @ ;
+: >NAME  ( xt -- nfa | 0 )  DUP WORD-AT DUP IF TUCK NAME> <> IF DROP 0 THEN ELSE NIP THEN ;
+: .NAME  ( nfa -- )  COUNT 31 AND TYPE ;
+: .OCTAL  ( u -- )  BASE @ >R 8 BASE ! 0 <# # # # # # # #> TYPE R> BASE ! ;
+
+\ ---- error reports -------------------------------------------------------------
+: .TRAP  ( -- )  \ what the last unexpected trap was, and where
+  TRAP-VEC @ DUP 4 = IF ." bus error or odd address" ELSE
+    DUP 10O = IF ." illegal or reserved instruction" ELSE
+    DUP 14O = IF ." breakpoint trap (BPT)" ELSE
+    DUP 20O = IF ." IOT trap" ELSE
+    DUP 30O = IF ." EMT trap" ELSE
+    DUP 34O = IF ." TRAP instruction" ELSE
+    DUP 24O = IF ." power fail" ELSE
+    ." unexpected interrupt" THEN THEN THEN THEN THEN THEN THEN
+  ."  (vector " .OCTAL ." , PC " TRAP-PC @ DUP .OCTAL
+  WORD-AT ?DUP IF ."  in " .NAME THEN ." )" ;
+: .ERROR-TEXT  ( code -- )
+  DUP -1 = IF DROP ." aborted" EXIT THEN
+  DUP -2 = IF DROP ABORT-MSG @ COUNT TYPE EXIT THEN
+  DUP -3 = IF DROP ." stack overflow" EXIT THEN
+  DUP -4 = IF DROP ." stack underflow" EXIT THEN
+  DUP -5 = IF DROP ." return stack overflow" EXIT THEN
+  DUP -8 = IF DROP ." dictionary full" EXIT THEN
+  DUP -10 = IF DROP ." division by zero" EXIT THEN
+  DUP -13 = IF DROP ." undefined word" EXIT THEN
+  DUP -14 = IF DROP ." compile-only word interpreted" EXIT THEN
+  DUP -15 = IF DROP ." cannot forget kernel words" EXIT THEN
+  DUP -16 = IF DROP ." name expected" EXIT THEN
+  DUP -19 = IF DROP ." name longer than 31 characters" EXIT THEN
+  DUP -22 = IF DROP ." unbalanced control structure" EXIT THEN
+  DUP -23 = IF DROP ." odd address for a word access" EXIT THEN
+  DUP -33 = IF DROP ." block read error" EXIT THEN
+  DUP -34 = IF DROP ." block write error" EXIT THEN
+  DUP -35 = IF DROP ." no such block" EXIT THEN
+  DUP -256 = IF DROP .TRAP EXIT THEN
+  ." error " . ;
+: .ERROR  ( code -- )  \ Error: what: word [in block b line l]
+  CR ." Error: " .ERROR-TEXT  ." : " WHAT 2@ TYPE
+  BLK @ IF ."  in block " BLK @ . ." line " >IN @ 1- 0 MAX 64 / . THEN CR ;
+: DISCARD-DEFINITION  ( -- )  \ a definition cut short leaves nothing behind
+  STATE @ IF COLON-LFA @ ?DUP IF DUP @ CURRENT @ ! DP !  CURRENT @ @ 2+ LAST ! THEN THEN
+  0 COLON-LFA ! ;
+: RESET-AFTER-ERROR  ( -- )
+  DISCARD-DEFINITION  POSTPONE [  0 BLK !  0 SOURCE-ID !  CURRENT @ CONTEXT !
+  'ON-ERROR @ ?DUP IF EXECUTE THEN  S0 SP! ;
+
+\ ---- QUIT --------------------------------------------------------------------------
+: QUERY  ( -- )  \ a line from the terminal becomes the source
+  TIB TIB-SIZE 1- ACCEPT  TIB SWAP SRC 2!  0 >IN !  0 BLK !  0 SOURCE-ID !  SPACE ;
+: INTERPRET-LINE  ( -- )  QUERY INTERPRET ;
+: QUIT  ( -- )  \ read, interpret, report: forever
+  RP0 RP!  0 HANDLER !  POSTPONE [  0 BLK !
+  BEGIN
+    ['] INTERPRET-LINE CATCH ?DUP IF .ERROR RESET-AFTER-ERROR ELSE ."  ok" CR THEN
+  AGAIN ;
+: WARM  ( -- )  S0 SP! QUIT ;  \ THROW with no CATCH frame comes here

@@ -1,0 +1,66 @@
+\ forth/kernel/tools.fs: .S WORDS DUMP SEE, FORGET and MARKER.
+
+: .S  ( -- )  \ the stack, deepest first
+  ." <" DEPTH 0 .R ." > "  DEPTH DUP 0 ?DO DUP I - PICK . LOOP DROP ;
+VARIABLE COLUMN  ( -- a )
+: WORDS  ( -- )  \ the CONTEXT vocabulary, newest first
+  0 COLUMN !  CONTEXT @ @ BEGIN ?DUP WHILE
+    DUP 2+ C@ 32 AND 0= IF
+      COLUMN @ 64 > IF CR 0 COLUMN ! THEN
+      DUP 2+ DUP .NAME SPACE C@ 31 AND 1+ COLUMN +!
+    THEN @
+  REPEAT ;
+: DUMP  ( a u -- )  \ bytes in BASE, then as characters
+  OVER + SWAP ?DO
+    CR I 6 U.R ." : "  I 16 + I ?DO I C@ 4 U.R LOOP  SPACE
+    I 16 + I ?DO I C@ DUP BL 127 WITHIN 0= IF DROP [CHAR] . THEN EMIT LOOP
+  16 +LOOP CR ;
+
+\ ---- SEE: decompile a colon definition ------------------------------------------------
+: .XT  ( xt -- )  DUP >NAME ?DUP IF NIP .NAME ELSE ." [" .OCTAL ." ]" THEN SPACE ;
+: INLINE-STRING?  ( xt -- f )
+  DUP ['] (.") = OVER ['] (S") = OR SWAP ['] (ABORT") = OR ;
+: BRANCHING?  ( xt -- f )  \ words followed by a target address
+  DUP ['] BRANCH = OVER ['] ?BRANCH = OR OVER ['] (DO) = OR OVER ['] (?DO) = OR
+  OVER ['] (LOOP) = OR SWAP ['] (+LOOP) = OR ;
+: SEE-COLON  ( body -- )
+  DUP BEGIN  ( far a )
+    DUP @ DUP .XT  ( far a xt )
+    DUP ['] (LIT) = IF DROP 2+ DUP @ . ELSE
+    DUP INLINE-STRING? IF DROP 2+ DUP COUNT TYPE [CHAR] " EMIT SPACE DUP C@ + 1- ALIGNED
+    ELSE DUP BRANCHING? IF DROP 2+ DUP @ DUP ." ->" .OCTAL SPACE ROT MAX SWAP
+    ELSE ['] EXIT = IF 2DUP U< 0= IF 2DROP EXIT THEN THEN THEN THEN THEN
+    2+
+  AGAIN ;
+: SEE  ( "name" -- )
+  ' CR DUP >NAME ?DUP IF .NAME SPACE THEN
+  DUP @ JSR-IP = OVER 2+ @ 'DOCOL = AND IF ." is : " 4 + SEE-COLON ." ;" CR EXIT THEN
+  DUP @ JSR-W = IF DUP 2+ @
+    DUP 'DOVAR = IF DROP ." is CREATE / VARIABLE, body at " >BODY .OCTAL CR EXIT THEN
+    DUP 'DOCON = IF DROP ." is CONSTANT " >BODY @ . CR EXIT THEN
+    ." has DOES> code at " .OCTAL ." , body at " >BODY .OCTAL CR EXIT THEN
+  ." is CODE at " DUP .OCTAL ." : " 8 0 DO DUP @ .OCTAL SPACE 2+ LOOP DROP CR ;
+
+\ ---- FORGET and MARKER -----------------------------------------------------------
+: TRIM  ( lfa body -- )  \ unlink chain entries at or above lfa
+  BEGIN 2DUP @ SWAP U< 0= OVER @ 0<> AND WHILE DUP @ @ OVER ! REPEAT 2DROP ;
+: TRIM-VOCS  ( lfa -- )  \ trim every vocabulary; drop forgotten vocabularies
+  VOC-LINK BEGIN DUP @ WHILE
+    DUP @ 2 PICK U< 0= IF DUP @ @ OVER ! ELSE 2DUP @ 2- TRIM @ THEN
+  REPEAT 2DROP ;
+: RESTORE-VECTORS  ( lfa -- )  \ no vector may point into forgotten code
+  1000O 0 DO
+    I @ OVER HERE WITHIN IF
+      STUBS I + I !  ." vector " I .OCTAL ."  restored to its default handler" CR
+    THEN
+  4 +LOOP DROP ;
+: (FORGET)  ( lfa -- )  \ remove every word from lfa up
+  DUP FENCE @ U< IF -15 THROW THEN
+  DUP RESTORE-VECTORS  DUP TRIM-VOCS
+  CONTEXT @ OVER U< 0= IF FORTH-BODY CONTEXT ! THEN
+  CURRENT @ OVER U< 0= IF FORTH-BODY CURRENT ! THEN
+  DP !  CURRENT @ @ 2+ LAST ! ;
+: FORGET  ( "name" -- )
+  PARSE-NAME CURRENT @ @ (FIND) ?DUP 0= IF -13 THROW THEN 2- (FORGET) ;
+: MARKER  ( "name" -- )  ALIGN HERE CREATE , DOES> @ (FORGET) ;
+: ENVIRONMENT?  ( a u -- false )  2DROP FALSE ;

@@ -1,0 +1,63 @@
+\ forth/meta/build.fs: metacompile the kernel; write build/kernel.lda and
+\ build/kernel.map. Run from the repository root:
+\   gforth forth/meta/build.fs -e bye
+\ Exits non-zero, naming file and line, on any error or unresolved reference.
+
+warnings off   \ gforth has its own A, and A!: ours are meant
+require image.fs
+include ../asm-host.fs
+require meta.fs
+require defs.fs
+require compile.fs
+require kmacros.fs
+
+: file-exists? ( addr u -- f )  r/o open-file if drop false else close-file throw true then ;
+: kernel ( addr u -- )  meta-include ;
+
+decimal
+$400 tdp !    \ ORIGIN 002000: vectors and stubs below, filled at the end
+s" forth/kernel/memory.fs" kernel
+s" forth/kernel/prims.fs" kernel
+s" forth/kernel/core.fs" kernel
+s" forth/kernel/interp.fs" kernel
+s" forth/kernel/quit.fs" kernel
+s" forth/kernel/tools.fs" kernel
+s" forth/kernel/disk.fs" file-exists? [if]
+  s" forth/kernel/disk.fs" kernel
+[else]
+  s" forth/kernel/nodisk.fs" kernel
+[then]
+s" forth/kernel/editor.fs" file-exists? [if]  s" forth/kernel/editor.fs" kernel  [then]
+s" forth/kernel/boot.fs" kernel
+
+\ ---- finish: resolve, initialise the kernel's variables, vectors ---------------
+: fail ( addr u -- )  cr type cr 1 (bye) ;
+close-code
+tstate @ [if] s" unfinished definition at the end of the kernel" fail [then]
+fwd-report [if] s" unresolved forward references" fail [then]
+: lbl ( "name" -- x )  parse-name label-value ;
+: [lbl] ( "name" -- )  parse-name postpone sliteral postpone label-value ; immediate
+: body! ( x "name" -- )  parse-name tcfa-of 4 + t! ;
+there body! DP
+there body! FENCE
+tlast-nfa @ body! LAST
+tvoc-link @ body! VOC-LINK
+\ each vocabulary's head into its target body
+: voc-heads ( -- )  tvocs begin ?dup while
+    dup voc-body @ 0= if s" a vocabulary was never defined" fail then
+    dup voc-head @ over voc-body @ t!  3 cells + @ repeat ;
+voc-heads
+\ vector v -> STUBS+v at priority 7; stub: JSR R0,@#TRAPPED, except the
+\ console receiver (JMP @#RXINT) and the line clock (RTI)
+: fill-vectors ( -- )
+  $200 0 do
+    [lbl] STUBS i + i t!  $E0 i 2 + t!
+    i $30 = if $5F [lbl] STUBS i + t!  [lbl] RXINT [lbl] STUBS i + 2 + t! else
+    i $40 = if 2 [lbl] STUBS i + t!  $A0 [lbl] STUBS i + 2 + t! else
+      $081F [lbl] STUBS i + t!  [lbl] TRAPPED [lbl] STUBS i + 2 + t! then then
+  4 +loop ;
+fill-vectors
+0 there lbl ENTRY s" build/kernel.lda" write-lda
+s" build/kernel.map" write-map
+.( kernel: ) there lbl ORIGIN - . .( bytes, ) 
+lbl LIMIT there - 160 - . .( bytes free, entry ) lbl ENTRY .oct6 cr

@@ -1,0 +1,23 @@
+\ forth/meta/kmacros.fs: host-side assembler macros used by the kernel's CODE
+\ words (gforth words in the FORTH wordlist, found by the metacompiler's
+\ interpreter inside CODE bodies). One place for patterns several words share.
+>asm
+\ ( a b -- flag ), flag true when "a cond b" holds (cond as after CMP a-b)
+: BINCMP, ( cond -- )
+  R0 S )+ MOV,  T CLR,  R0 S ) CMP,  IF, T DEC, THEN,  S ) T MOV,  NEXT, ;
+\ ( a -- flag ), flag true when "a cond 0" holds
+: UNCMP, ( cond -- )
+  T CLR,  S ) TST,  IF, T DEC, THEN,  S ) T MOV,  NEXT, ;
+\ R3 = the character at W; when the delimiter in R0 is a blank, every control
+\ character (tab, ...) reads as a blank too
+: BLANKCHAR, ( -- )
+  R3 W ) MOVB,  R3 $FF00 # BIC,
+  32 # R0 CMP,  EQ IF,  32 # R3 CMP,  LOS IF,  R3 32 # MOV,  THEN,  THEN, ;
+\ raise FORTH error n from a CODE word: replace the top of stack with n and
+\ continue in the thread cell holding THROW's code address
+: THROW, ( n -- )
+  >r S ) r> # MOV,  IP s" THROW-CELL" label-value # MOV,  NEXT, ;
+\ a word access at an odd address: the 11/23 (F-11) would silently use the even
+\ address below, so @ ! and friends check and report error -23 themselves
+: ?ODD, ( -- )  R0 1 # BIT,  NE IF,  -23 THROW,  THEN, ;
+asm>

@@ -1,0 +1,12 @@
+"""Fixtures for the FORTH tests: a booted machine per module (fresh disk)."""
+import pytest
+
+from harness.machine import KERNEL, SIMULATOR, Machine
+
+
+@pytest.fixture(scope="module")
+def forth():
+    if not KERNEL.exists() or not SIMULATOR.exists():
+        pytest.fail(f"build first: {KERNEL} and {SIMULATOR} (make kernel build/pdp11-stock)")
+    with Machine() as m:
+        yield m
