@@ -20,7 +20,7 @@ KERNEL = Path(__file__).resolve().parent.parent / "build" / "kernel.lda"
 THROTTLE = "set throttle 300K"     # the KDF11-A's rate, as SET CLK RATE's default
 CTRL_D, CTRL_E, CTRL_U = b"\x04", b"\x05", b"\x15"
 HINT = ("Console: leave with BYE (or ^D): the FORTH FLUSHes its blocks and the disk is "
-        "detached. ^E gives SIMH's sim> prompt (SHOW PLANT, then CONTINUE).")
+        "detached. ^E gives SIMH's sim> prompt (SHOW PLANT, then CONT to come back).")
 
 
 class Leave(Exception):
@@ -65,16 +65,27 @@ def say(text):
     sys.stdout.flush()
 
 
+def probe_prompt(child, tries=20):
+    """After CONT: SIMH discards what was typed before the machine runs
+    (TCSAFLUSH), so type an empty line until the FORTH answers it.
+    0 answered, 2 no answer, 3 the simulator exited."""
+    ok = " ok\r\n" if child.encoding else b" ok\r\n"   # str or bytes, as the child reads
+    for _ in range(tries):
+        child.send("\r")
+        i = child.expect([ok, pexpect.TIMEOUT, pexpect.EOF], timeout=0.5)
+        if i != 1:
+            return 0 if i == 0 else 3
+    return 2
+
+
 def leave(child, trace):
     """Flush the FORTH's blocks, detach, quit. Returns True if FLUSH was answered."""
     child.logfile_read = sys.stdout.buffer       # the user sees what happens
     child.send(CTRL_U + b"\r")                   # an empty line: who answers?
     i = child.expect([b" ok\r\n", b"sim> ", pexpect.TIMEOUT, pexpect.EOF], timeout=15)
     if i == 1:                                   # SIMH had the machine stopped
-        child.send(b"continue\r")
-        child.send(b"\r")
-        i = child.expect([b" ok\r\n", pexpect.TIMEOUT, pexpect.EOF], timeout=15)
-        i = {0: 0, 1: 2, 2: 3}[i]
+        child.send(b"cont\r")
+        i = probe_prompt(child)
     flushed = False
     if i == 0:
         child.send(b"FLUSH\r")
