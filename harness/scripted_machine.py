@@ -20,6 +20,7 @@ and the plant trace are the same on every run and every host.
 A line that does not reach the next prompt within `line_limit` simulated seconds
 (SIMH `STEP`) is stopped and reported. Addresses come from build/kernel.map.
 """
+import contextlib
 import re
 import tempfile
 from dataclasses import dataclass
@@ -76,7 +77,7 @@ def read_kernel_map(path=KERNEL_MAP):
 FORTH_ERROR = re.compile(r"\r\nError: ([^\r\n]*)")
 
 
-class ScriptedMachine:
+class ScriptedMachine(contextlib.AbstractContextManager):
     def __init__(self, disk, trace=None, simulator=PDP11, kernel=KERNEL,
                  kernel_map=KERNEL_MAP, line_limit=60.0, wall_timeout=300, cwd=ROOT):
         """`disk` and `trace` are attached as given, relative to `cwd`: SIMH
@@ -188,20 +189,16 @@ class ScriptedMachine:
 
     def close(self):
         """Detach the trace and the disk (SIMH flushes them) and quit."""
-        if self.child.isalive():
-            try:
-                if self.trace:
-                    self.simh("detach plant")
-                self.simh("detach rl0")
-                self.child.send("quit\r")
-                self.child.expect(pexpect.EOF, timeout=10)
-            except (ScriptError, pexpect.TIMEOUT, pexpect.EOF, OSError):
-                pass
-            self.child.close(force=True)
+        commands = (["detach plant"] if self.trace else []) + ["detach rl0"]
+        try:
+            for command in commands if self.child.isalive() else ():
+                self.simh(command)
+            self.child.send("quit\r")
+            self.child.expect(pexpect.EOF, timeout=10)
+        except (ScriptError, pexpect.TIMEOUT, pexpect.EOF, OSError):
+            pass            # a simulator already gone or stuck: killed below
+        self.child.close(force=True)
         self._tmp.cleanup()
-
-    def __enter__(self):
-        return self
 
     def __exit__(self, *exc):
         self.close()
