@@ -9,7 +9,7 @@ from harness import script
 from harness.commands.argtypes import positive
 from harness.disk import write_atomic
 from harness.script_run import run_steps
-from harness.scripted_machine import ScriptError, ScriptedMachine
+from harness.scripted_machine import KERNEL, ScriptError, ScriptedMachine
 from harness.simh import PDP11, SimhError
 
 NAME = "run"
@@ -54,6 +54,9 @@ def configure(parser):
     parser.add_argument("--line-limit", type=positive, default=60.0, metavar="SECONDS",
                         help="simulated seconds a line may run before it is stopped "
                         "and reported (default 60)")
+    parser.add_argument("--kernel", metavar="LDA", default=str(KERNEL),
+                        help="the FORTH kernel to load (default build/kernel.lda); its "
+                        "symbol map is the .map file beside it")
     parser.add_argument("--simulator", default=str(PDP11), help=argparse.SUPPRESS)
     parser.set_defaults(run=run)
 
@@ -90,7 +93,9 @@ def run(args):
         except OSError as e:
             raise ScriptError(f"{disk}: cannot copy the disk image: {e.strerror}") from e
         with ScriptedMachine("robot.dsk", trace="trace.csv", cwd=tmp,
-                             simulator=args.simulator, line_limit=args.line_limit) as m:
+                             simulator=args.simulator, line_limit=args.line_limit,
+                             kernel=Path(args.kernel),
+                             kernel_map=Path(args.kernel).with_suffix(".map")) as m:
             result = run_steps(m, steps, keep_going=args.keep_going)
         trace = (Path(tmp) / "trace.csv").read_bytes()
     write_atomic(transcript_path, result.transcript.encode("latin-1"))
