@@ -64,6 +64,8 @@ def test_a_line_that_never_finishes_is_stopped_in_simulated_time(tmp_path):
     (["run", "BAD.script"], "BAD.script:2: unknown directive #wiat"),
     (["run", "OK.script", "--disk", "NONE.dsk"], "NONE.dsk: no such disk image"),
     (["run", "OK.script", "--transcript", "NODIR/t"], "NODIR: no such directory"),
+    (["run", "OK.script", "--kernel", "NONE.lda"], "NONE.lda does not exist"),
+    (["run", "OK.script", "--kernel", "BAD.script"], "BAD.map: No such file"),
 ])
 def test_bad_input_is_a_clear_error_and_writes_nothing(tmp_path, args, message):
     (tmp_path / "BAD.script").write_text("1 .\n#wiat 2\n")
