@@ -7,6 +7,8 @@ path and no host time, so two runs of a script give the same bytes.
 """
 from dataclasses import dataclass, field
 
+from harness.scripted_machine import ScriptError
+
 
 class Transcript:
     """Console output as it arrives, with SIMH exchanges put in between.
@@ -69,8 +71,15 @@ def run_steps(machine, steps, keep_going=False):
     for step in steps:
         result.steps_run += 1
         if step.kind == "simh":
-            transcript.simh(step.text, machine.simh(step.text))
-            continue
+            try:
+                transcript.simh(step.text, machine.simh(step.text))
+                continue
+            except ScriptError as e:      # SIMH refused the command; the machine is fine
+                transcript.simh(step.text, e.output)
+                result.failures.append(Failure(step.lineno, step.text, str(e)))
+                if keep_going:
+                    continue
+                break
         answer = machine.wait(step.seconds) if step.kind == "wait" else machine.line(step.text)
         transcript.console(answer.output)
         message = _failure(answer)

@@ -42,7 +42,12 @@ EXAMINED = re.compile(r"([0-7]+):\s+([0-7]+)")
 
 
 class ScriptError(RuntimeError):
-    """The machine could not be driven as asked (not a FORTH error)."""
+    """The machine could not be driven as asked (not a FORTH error); `output`
+    is what SIMH printed when it refused a command."""
+
+    def __init__(self, message, output=""):
+        super().__init__(message)
+        self.output = output
 
 
 @dataclass
@@ -115,7 +120,7 @@ class ScriptedMachine(contextlib.AbstractContextManager):
                               f"during {what}: {self.child.before[-500:]!r}")
         text = self.child.before
         if re.search(r"(?m)^(%SIM-ERROR|.*(error|Error|not found|Non-existent|Invalid))", text):
-            raise ScriptError(f"the simulator reported, during {what}: {text.strip()}")
+            raise ScriptError(f"the simulator reported, during {what}: {text.strip()}", text)
         return text
 
     def simh(self, command):

@@ -59,6 +59,17 @@ def test_a_line_that_never_finishes_is_stopped_in_simulated_time(tmp_path):
     assert f"{script}:2: the simulator stopped: no prompt within 0.5 simulated seconds" in r.stderr
 
 
+def test_a_simh_command_that_simh_refuses_fails_its_line(tmp_path):
+    script = tmp_path / "s.script"
+    script.write_text("1 .\n#simh show nosuchdevice\n2 .\n")
+    r = harness("run", script)
+    assert r.returncode == 1
+    assert f"{script}:2: the simulator reported, during show nosuchdevice: " \
+           "Non-existent device" in r.stderr
+    transcript = (tmp_path / "s.transcript").read_text()
+    assert transcript.endswith("1 . 1  ok\nsim> show nosuchdevice\nNon-existent device\n")
+
+
 @pytest.mark.parametrize("args, message", [
     (["run", "NONE.script"], "NONE.script: cannot read the script"),
     (["run", "BAD.script"], "BAD.script:2: unknown directive #wiat"),
