@@ -9,9 +9,9 @@ line to COMMANDS.
 import argparse
 import sys
 
-from harness.commands import disk, plot, timing
+from harness.commands import console, disk, plot, regress, run, timing
 
-COMMANDS = (disk, plot, timing)
+COMMANDS = (console, run, regress, disk, plot, timing)
 
 
 def build_parser():

@@ -1,5 +1,8 @@
-# mk/run.mk: `make run`, for now the robot's PDP-11/23 (build/pdp11) with the
-# machine configured (pdp11-devices/machine.ini), left at SIMH's sim> prompt.
-# The FORTH console (build/robot.ini) takes its place when the kernel lands.
-run: $(BUILD)/pdp11
-	@$(BUILD)/pdp11 pdp11-devices/machine.ini
+# mk/run.mk: `make run`, the interactive FORTH console on the robot's PDP-11/23
+# (python -m harness console): the simulator, the kernel, the Python venv and
+# the working disk local/robot.dsk (made from build/robot.dsk when missing,
+# never overwritten) are built first. Leave with BYE (blocks are flushed).
+#   make run FAST=1      full speed instead of the 11/23's real-time pace
+#   make run TRACE=f.csv record the plant trace
+run: $(BUILD)/pdp11 $(BUILD)/kernel.lda $(BUILD)/kernel.map $(WORK_DSK) venv
+	@$(PY) -m harness console $(if $(FAST),--fast) $(if $(TRACE),--trace $(TRACE))

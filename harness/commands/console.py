@@ -1,0 +1,70 @@
+"""`console`: the interactive FORTH terminal that `make run` starts."""
+import argparse
+import shutil
+from pathlib import Path
+
+from harness.console_session import HINT, session
+from harness.simh import PDP11
+
+NAME = "console"
+HELP = "the interactive FORTH console on the robot's PDP-11/23 (what make run starts)"
+ROOT = Path(__file__).resolve().parents[2]
+WORK_DISK = ROOT / "local" / "robot.dsk"
+PRISTINE = ROOT / "build" / "robot.dsk"
+
+
+class ConsoleError(RuntimeError):
+    """The console cannot start."""
+
+
+ERRORS = (ConsoleError,)
+
+DESCRIPTION = f"""\
+Boot the FORTH on the robot's PDP-11/23 and join your terminal to its console,
+ready for `1000 LOAD`. The machine runs at the 11/23's pace (SIMH SET THROTTLE
+300K: SIMH measures the host for a few million instructions first, then
+paces) unless --fast.
+
+{HINT}
+
+The disk is the working copy local/robot.dsk (created from build/robot.dsk when
+missing; make never overwrites it), or --disk IMAGE."""
+
+
+def configure(parser):
+    parser.description = DESCRIPTION
+    parser.formatter_class = argparse.RawDescriptionHelpFormatter
+    parser.add_argument("--disk", metavar="IMAGE", help="disk image to use and change "
+                        "(default: local/robot.dsk)")
+    parser.add_argument("--fast", action="store_true",
+                        help="full speed instead of the 11/23's real-time pace")
+    parser.add_argument("--trace", metavar="FILE", help="record the plant trace (CSV)")
+    parser.add_argument("--simulator", default=str(PDP11), help=argparse.SUPPRESS)
+    parser.set_defaults(run=run)
+
+
+def working_disk(requested):
+    """The image to attach; the default working copy is made when missing."""
+    if requested:
+        disk = Path(requested)
+        if not disk.is_file():
+            raise ConsoleError(f"{disk}: no such disk image")
+        return disk
+    if not WORK_DISK.is_file():
+        if not PRISTINE.is_file():
+            raise ConsoleError(f"neither {WORK_DISK} nor {PRISTINE} exists: run make")
+        WORK_DISK.parent.mkdir(parents=True, exist_ok=True)
+        tmp = WORK_DISK.with_suffix(".tmp")
+        shutil.copyfile(PRISTINE, tmp)
+        tmp.replace(WORK_DISK)
+        print(f"[console] working disk {WORK_DISK} created from {PRISTINE}")
+    return WORK_DISK
+
+
+def run(args):
+    disk = working_disk(args.disk)
+    if not Path(args.simulator).is_file():
+        raise ConsoleError(f"{args.simulator}: no simulator (run make)")
+    if args.trace and not Path(args.trace).resolve().parent.is_dir():
+        raise ConsoleError(f"{args.trace}: its directory does not exist")
+    return session(args.simulator, disk, trace=args.trace, fast=args.fast)

@@ -1,0 +1,18 @@
+# mk/harness.mk: the harness's scripted runs and regression suite.
+#   make regression          run tests/regression/scenarios against their goldens
+#   make regression-update   rewrite the goldens and print what changed
+#   make bench-harness       wall time of one scenario with boot, of the whole
+#                            suite, and the real-time factor (part of make bench)
+HARNESS_NEEDS := $(BUILD)/pdp11 $(BUILD)/kernel.lda $(BUILD)/kernel.map $(PRISTINE_DSK) venv
+
+regression: $(HARNESS_NEEDS)
+	@$(PY) -m harness regress
+
+regression-update: $(HARNESS_NEEDS)
+	@$(PY) -m harness regress --update
+
+bench-harness: $(HARNESS_NEEDS)
+	@$(PY) -m harness.run_bench
+
+BENCHES += bench-harness
+.PHONY: regression regression-update bench-harness

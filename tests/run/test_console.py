@@ -1,0 +1,84 @@
+"""The interactive console through a pty: boot, a command, SIMH's prompt and
+back, and a clean exit that leaves an UPDATEd block on the disk."""
+import shutil
+import sys
+
+import pexpect
+import pytest
+
+from harness.console_session import probe_prompt
+from tests.run.common import PRISTINE, ROOT, needs_build
+
+pytestmark = needs_build
+
+BLOCK = 100
+
+
+def console(disk, *extra):
+    child = pexpect.spawn(sys.executable, ["-m", "harness", "console", "--fast",
+                                           "--disk", str(disk), *extra],
+                          cwd=str(ROOT), timeout=30, encoding="latin-1")
+    child.delaybeforesend = None
+    child.expect("Console: leave with BYE")
+    child.expect(r"blocks 0-\d+\.\r\n ok\r\n")
+    return child
+
+
+def write_block_word(child, text):
+    child.send(f': W S" {text}" {BLOCK} BLOCK SWAP CMOVE UPDATE ; W\r')
+    child.expect(r" ok\r\n")
+
+
+def block_text(disk, n):
+    return disk.read_bytes()[1024 * n:1024 * n + 64]
+
+
+def test_console_command_simh_prompt_and_bye_flushes(tmp_path):
+    disk = tmp_path / "work.dsk"
+    shutil.copyfile(PRISTINE, disk)
+    child = console(disk, "--trace", str(tmp_path / "t.csv"))
+    child.send("1 2 + .\r")
+    child.expect(r"1 2 \+ \. 3  ok\r\n")
+    child.send("\x05")                                   # ^E: SIMH's prompt
+    child.expect("sim> ")
+    child.send("show plant\r")
+    child.expect(r"PLANT, seed=\d+.*\r\n  X ")
+    child.expect("sim> ")
+    child.send("cont\r")
+    assert probe_prompt(child) == 0
+    child.send("6 7 * .\r")
+    child.expect(r"6 7 \* \. 42  ok\r\n")
+    write_block_word(child, "typed at the console")
+    assert not block_text(disk, BLOCK).startswith(b"typed")  # still in a buffer
+    child.send("BYE\r")
+    child.expect(r"blocks flushed; disk .* detached\. Bye\.")
+    child.expect(pexpect.EOF)
+    child.close()
+    assert child.exitstatus == 0
+    assert block_text(disk, BLOCK).startswith(b"typed at the console")
+    assert (tmp_path / "t.csv").read_text().startswith("time_s,axis,")
+
+
+def test_ctrl_d_from_the_simh_prompt_also_flushes(tmp_path):
+    disk = tmp_path / "work.dsk"
+    shutil.copyfile(PRISTINE, disk)
+    child = console(disk)
+    write_block_word(child, "left with control-D")
+    child.send("\x05")
+    child.expect("sim> ")
+    child.send("\x04")                                   # ^D at sim>: leave all the same
+    child.expect(r"blocks flushed; disk .* detached\. Bye\.")
+    child.expect(pexpect.EOF)
+    child.close()
+    assert child.exitstatus == 0
+    assert block_text(disk, BLOCK).startswith(b"left with control-D")
+
+
+def test_missing_disk_is_a_clear_error(tmp_path):
+    child = pexpect.spawn(sys.executable, ["-m", "harness", "console", "--disk",
+                                           str(tmp_path / "none.dsk")],
+                          cwd=str(ROOT), timeout=30, encoding="latin-1")
+    child.expect(pexpect.EOF)
+    child.close()
+    assert "none.dsk: no such disk image" in child.before
+    assert child.exitstatus == 1

@@ -1,0 +1,93 @@
+"""`python -m harness run`: determinism, outputs, the disk left alone, bad input."""
+import hashlib
+import subprocess
+import sys
+
+import pytest
+
+from tests.run.common import PRISTINE, ROOT, needs_build
+
+pytestmark = needs_build
+
+SCRIPT = """# a short session with both directives
+1 2 + .
+#wait 0.5
+#simh show plant
+: SQ ( n -- n*n ) DUP * ;
+9 SQ .
+"""
+
+
+def harness(*args):
+    return subprocess.run([sys.executable, "-m", "harness", *map(str, args)], cwd=ROOT,
+                          capture_output=True, text=True, timeout=120)
+
+
+def test_two_runs_give_identical_files_and_leave_the_disk_alone(tmp_path):
+    script = tmp_path / "s.script"
+    script.write_text(SCRIPT)
+    before = hashlib.sha256(PRISTINE.read_bytes()).hexdigest()
+    outputs = []
+    for out in ("a", "b"):
+        r = harness("run", script, "--out", tmp_path / out)
+        assert r.returncode == 0, r.stderr
+        outputs.append([(tmp_path / out / name).read_bytes()
+                        for name in ("s.transcript", "s.trace.csv")])
+    assert outputs[0] == outputs[1]
+    transcript = outputs[0][0].decode()
+    assert "1 2 + . 3  ok\n" in transcript and "9 SQ . 81  ok\n" in transcript
+    assert "sim> show plant\nPLANT, seed=1983" in transcript
+    assert str(tmp_path) not in transcript and "\r" not in transcript
+    assert outputs[0][1].startswith(b"time_s,axis,dac,vcmd,vel,pos,counter\n")
+    assert hashlib.sha256(PRISTINE.read_bytes()).hexdigest() == before
+
+
+def test_default_outputs_beside_the_script_and_named_options(tmp_path):
+    script = tmp_path / "s.script"
+    script.write_text("1 .\n")
+    assert harness("run", script).returncode == 0
+    assert (tmp_path / "s.transcript").is_file() and (tmp_path / "s.trace.csv").is_file()
+    r = harness("run", script, "--transcript", tmp_path / "t.txt", "--trace", tmp_path / "t.csv")
+    assert r.returncode == 0 and (tmp_path / "t.txt").read_text().endswith("1 . 1  ok\n")
+
+
+def test_a_line_that_never_finishes_is_stopped_in_simulated_time(tmp_path):
+    script = tmp_path / "loop.script"
+    script.write_text(": SPIN ( -- ) BEGIN AGAIN ;\nSPIN\n1 .\n")
+    r = harness("run", script, "--line-limit", "0.5")
+    assert r.returncode == 1
+    assert f"{script}:2: the simulator stopped: no prompt within 0.5 simulated seconds" in r.stderr
+
+
+def test_a_simh_command_that_simh_refuses_fails_its_line(tmp_path):
+    script = tmp_path / "s.script"
+    script.write_text("1 .\n#simh show nosuchdevice\n2 .\n")
+    r = harness("run", script)
+    assert r.returncode == 1
+    assert f"{script}:2: the simulator reported, during show nosuchdevice: " \
+           "Non-existent device" in r.stderr
+    transcript = (tmp_path / "s.transcript").read_text()
+    assert transcript.endswith("1 . 1  ok\nsim> show nosuchdevice\nNon-existent device\n")
+
+
+@pytest.mark.parametrize("args, message", [
+    (["run", "NONE.script"], "NONE.script: cannot read the script"),
+    (["run", "BAD.script"], "BAD.script:2: unknown directive #wiat"),
+    (["run", "OK.script", "--disk", "NONE.dsk"], "NONE.dsk: no such disk image"),
+    (["run", "OK.script", "--transcript", "NODIR/t"], "NODIR: no such directory"),
+    (["run", "OK.script", "--kernel", "NONE.lda"], "NONE.lda does not exist"),
+    (["run", "OK.script", "--kernel", "BAD.script"], "BAD.map: No such file"),
+])
+def test_bad_input_is_a_clear_error_and_writes_nothing(tmp_path, args, message):
+    (tmp_path / "BAD.script").write_text("1 .\n#wiat 2\n")
+    (tmp_path / "OK.script").write_text("1 .\n")
+    before = sorted(p.name for p in tmp_path.iterdir())
+    r = harness(*[tmp_path / a if a[0].isupper() else a for a in args])
+    assert r.returncode == 1
+    assert message in r.stderr
+    assert sorted(p.name for p in tmp_path.iterdir()) == before
+
+
+def test_a_bad_option_is_a_usage_error(tmp_path):
+    r = harness("run", tmp_path / "x.script", "--line-limit", "-3")
+    assert r.returncode == 2 and "expected a positive number" in r.stderr
