@@ -5,7 +5,7 @@
 #   make bench-forth   FORTH benchmarks (part of make bench)
 # PDP11_SIM is the simulator the harness and the benchmarks run; switch it to
 # $(BUILD)/pdp11 here (or on the command line) once the project's build lands.
-PDP11_SIM  ?= $(BUILD)/pdp11-stock
+PDP11_SIM  ?= $(BUILD)/pdp11
 ROBOT_DISK ?= local/robot.dsk
 export PDP11_SIM
 

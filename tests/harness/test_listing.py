@@ -1,0 +1,73 @@
+"""`listing`: blocks 1000-1012 beside what each line laid down in memory."""
+import re
+import subprocess
+import sys
+
+import pytest
+
+from harness.listing import make_listing
+from tests.conftest import ROOT
+
+
+@pytest.fixture(scope="module")
+def listing():
+    return make_listing()
+
+
+def test_every_line_of_every_block_is_listed(listing):
+    text = listing.format()
+    for blk in range(1000, 1013):
+        source = (ROOT / "blocks" / f"{blk}.txt").read_text().splitlines()
+        section = text.split(f"Block {blk}\n", 1)[1].split("\nBlock ", 1)[0]
+        listed = [l for l in section.splitlines() if re.match(r"^[ 1]\d \S?", l)]
+        assert len(listed) == 16, blk
+        for n, line in enumerate(source):
+            assert listed[n].startswith(f"{n:2} {line.rstrip()}".rstrip()), (blk, n)
+
+
+def test_interrupt_servo_is_assembled_by_block_1008_line_2(listing):
+    """The macros of 1001-1007 compile calls; CODE Interrupt.Servo runs them."""
+    spans = listing.spans[(1008, 2)]
+    code = [row for s in spans if s.code for row in s.disassembly]
+    texts = [t for _, _, t in code]
+    assert texts[:3] == ["MOV R0,-(SP)", "MOV R1,-(SP)", "MOV R2,-(SP)"]   # Save-Regs
+    assert texts[-4:] == ["MOV (SP)+,R2", "MOV (SP)+,R1", "MOV (SP)+,R0", "RTI"]
+    assert "MOV R0,@#167770" in texts           # CntOut @# R0 MOV, selects the axis
+    # each disassembled instruction's words follow one another with no gap
+    for (a, words, _), (b, _, _) in zip(code, code[1:]):
+        assert b == a + 2 * len(words)
+
+
+def test_macro_blocks_hold_threaded_code_only(listing):
+    for blk in range(1001, 1008):
+        for (b, _), spans in listing.spans.items():
+            if b == blk:
+                assert not any(s.code for s in spans), blk
+    mov = [s for s in listing.spans[(1002, 5)] if s.words]
+    assert [listing.names.get(w) for w in mov[-1].words] == ["MOV,"]
+
+
+def test_headers_and_names_of_new_words(listing):
+    headers = [s.header for ss in listing.spans.values() for s in ss if s.header]
+    assert headers[:2] == ["Desire.Pos", "State"]
+    assert "Interrupt.Servo" in headers and "Move.Complete?" in headers
+    assert "Abs.Move.Single" in listing.names.values()
+
+
+def test_cli_rejects_blocks_outside_the_appendix(tmp_path):
+    out = tmp_path / "x.lst"
+    r = subprocess.run([sys.executable, "-m", "harness", "listing", "--blocks", "1013",
+                        "--out", str(out)], cwd=ROOT, capture_output=True, text=True)
+    assert r.returncode == 1
+    assert "covers blocks 1000-1012" in r.stderr
+    assert not out.exists()
+
+
+def test_cli_writes_one_block(tmp_path):
+    out = tmp_path / "b.lst"
+    r = subprocess.run([sys.executable, "-m", "harness", "listing", "--blocks", "1009",
+                        "--out", str(out)], cwd=ROOT, capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    text = out.read_text()
+    assert text.startswith("Block 1009\n") and "header of Read.Counter" in text
+    assert "Block 1010" not in text
