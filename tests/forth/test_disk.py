@@ -200,3 +200,15 @@ def test_seek_selects_cylinder_and_head(image, boot):
     for n in (115, 105, 10239, 0, 31):
         m.send(f"{n} BUFFER DROP UPDATE FLUSH")
         assert m.send("4 RL-DO DROP RLMP @ 6 RSHIFT .").split() == [str(n // 10)]
+
+
+def test_update_in_a_loaded_block_marks_the_block_asked_for(image, boot):
+    # Parsing the rest of the line re-reads the source block (SOURCE); that
+    # must not make UPDATE mark the block being loaded instead of block 100.
+    put_block(image, 70, ["CHAR A 100 BLOCK C!  UPDATE"])
+    source = get_block(image, 70)
+    m = boot()
+    m.send("70 LOAD FLUSH")
+    m.close()
+    assert get_block(image, 100)[:1] == b"A"
+    assert get_block(image, 70) == source
