@@ -140,3 +140,12 @@ def test_code_words_with_the_resident_assembler(forth):
     assert forth.send("1 2 + .") == "3 "
     forth.send(": KONST CREATE , ;CODE S -) W ) MOV, NEXT, END-CODE")
     assert forth.send("5 KONST FIVE FIVE .") == "5 "
+
+
+def test_harness_reports_a_halt():
+    """A HALT reaches the simulator prompt: the harness says so, not a timeout."""
+    import pytest
+    from harness.machine import Machine, MachineHalted
+    with Machine() as m:
+        with pytest.raises(MachineHalted):
+            m.send("CODE STOP HALT, END-CODE STOP")
