@@ -87,7 +87,11 @@ class Machine:
                                    dimensions=(24, 200))
         self.child.delaybeforesend = None  # pexpect would wait 50 ms per send
         self.at_sim_prompt = False
-        self.banner = self._expect_ok_or_halt("boot")
+        try:
+            self.banner = self._expect_ok_or_halt("boot")
+        except Exception:
+            self.close()
+            raise
 
     # ---- low level -------------------------------------------------------------
     def _expect_ok_or_halt(self, what):
