@@ -149,3 +149,20 @@ def test_harness_reports_a_halt():
     with Machine() as m:
         with pytest.raises(MachineHalted):
             m.send("CODE STOP HALT, END-CODE STOP")
+
+
+def test_interrupt_handler_in_code_then_forget(forth):
+    """The appendix's pattern: register-saving macros as colon definitions that
+    assemble, a CODE word ending in RTI installed with ' into the clock vector
+    (the stock 11/23 clock always interrupts at 60 Hz), FORGET restores it."""
+    forth.send_lines("""MARKER CLOCK-TEST
+: Save-Regs ASSEMBLER RP -) R0 MOV, RP -) T MOV, RP -) W MOV, FORTH ;
+: Restore-Regs ASSEMBLER W RP )+ MOV, T RP )+ MOV, R0 RP )+ MOV, FORTH ;
+VARIABLE TICKS
+CODE Tick Save-Regs TICKS @# INC, Restore-Regs RTI,
+: Install ' Tick 100O ! ;
+: WAIT-TICKS ( n -- ) TICKS @ + BEGIN DUP TICKS @ - 0< UNTIL DROP ;""")
+    forth.send("Install 3 WAIT-TICKS")
+    assert int(forth.send("TICKS @ .")) >= 3
+    assert "vector 000100 restored" in forth.send("CLOCK-TEST")
+    assert forth.send("100O @ 1100O = .") == "-1 "
