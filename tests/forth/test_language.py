@@ -166,3 +166,15 @@ CODE Tick Save-Regs TICKS @# INC, Restore-Regs RTI,
     assert int(forth.send("TICKS @ .")) >= 3
     assert "vector 000100 restored" in forth.send("CLOCK-TEST")
     assert forth.send("100O @ 1100O = .") == "-1 "
+
+
+def test_ring_overflow_is_reported(forth):
+    """More than 256 characters typed while a word runs: the excess is dropped
+    and the loss is reported at the next line."""
+    forth.send(": BUSY2 10 0 DO 30000 0 DO LOOP LOOP ;")
+    forth.child.send("BUSY2\r" + ("1 DROP " * 11 + "\r") * 5)
+    forth.child.expect("characters lost: typed too far ahead")
+    forth.child.send("\r")  # ends whatever line the ring cut short
+    forth.child.send(".( in step)\r")
+    forth.child.expect(r"in step ok\r\n")
+    assert forth.send("2 2 + .") == "4 "
