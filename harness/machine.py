@@ -86,18 +86,24 @@ class Machine:
                                    encoding="latin-1", timeout=timeout,
                                    dimensions=(24, 200))
         self.child.delaybeforesend = None  # pexpect would wait 50 ms per send
-        self.banner = self._expect_ok_or_halt("boot")
+        self.at_sim_prompt = False
+        try:
+            self.banner = self._expect_ok_or_halt("boot")
+        except Exception:
+            self.close()
+            raise
 
     # ---- low level -------------------------------------------------------------
     def _expect_ok_or_halt(self, what):
         i = self.child.expect([OK, SIM_PROMPT, pexpect.EOF, pexpect.TIMEOUT])
         if i == 0:
             return self.child.before
-        self._stopped(what, i)
+        self._stopped(what, timed_out=(i == 3))
 
-    def _stopped(self, what, i):
+    def _stopped(self, what, timed_out):
+        self.at_sim_prompt = not timed_out
         text = self.child.before if isinstance(self.child.before, str) else ""
-        if i == 3:
+        if timed_out:
             raise TimeoutError(f"no answer to {what!r} within {self.timeout} s: {text[-500:]!r}")
         raise MachineHalted(f"simulator stopped during {what!r}: {text[-500:]!r}")
 
@@ -119,7 +125,7 @@ class Machine:
             return Reply(True, text)
         if i == 1:
             return Reply(False, text, self.child.match.group(1))
-        self._stopped(line, i + 1 if i >= 2 else i)
+        self._stopped(line, timed_out=(i == 4))
 
     def send(self, line, timeout=None):
         """Send one line; its output, or ForthError if it failed."""
@@ -136,8 +142,9 @@ class Machine:
     def close(self):
         if self.child.isalive():
             try:
-                self.child.sendcontrol("e")
-                self.child.expect(SIM_PROMPT, timeout=5)
+                if not self.at_sim_prompt:
+                    self.child.sendcontrol("e")
+                    self.child.expect(SIM_PROMPT, timeout=5)
                 self.child.sendline("quit")
                 self.child.expect(pexpect.EOF, timeout=5)
             except (pexpect.TIMEOUT, pexpect.EOF, OSError):

@@ -21,10 +21,13 @@ LABEL TICK  ( line clock, vector 100: nothing to do until a servo is installed )
   RTI,  END-CODE
 
 \ Machine entry (the start address in build/kernel.lda): stacks, console
-\ receive interrupt on, priority 0, then the thread holding COLD.
+\ receive interrupt on, free space filled, priority 0, then the thread holding COLD.
 LABEL ENTRY
   340O # MTPS,  RP RP0 # MOV,  S S0 # MOV,
   RXHEAD @# CLR,  RXTAIL @# CLR,  RXLOST @# CLR,  THROW-CELL @# ' THROW # MOV,
   177560O @# 100O # MOV,
+  \ free dictionary space holds a reserved instruction (000010): a wild jump past
+  \ HERE traps and is reported instead of running into HALT (zero) and stopping
+  R0 ' DP >BODY @# MOV,  BEGIN,  R0 )+ 10O # MOV,  LIMIT # R0 CMP,  HIS UNTIL,
   0 # MTPS,
   IP HERE 6 + # MOV,  NEXT,  ' COLD ,  END-CODE

@@ -112,8 +112,9 @@ CREATE CUR-BLK  ( -- a ) -1 ,   \ the block UPDATE marks, -1 = none
    ?BLOCK# DUP RESIDENT DUP 0< IF DROP FREE-BUF THEN
    OVER CUR-BLK ! TUCK >BLK ! DUP TOUCH BUF-ADDR ;
 : (BLOCK) ( blk -- addr ) \ BLOCK for SOURCE: leaves the current block alone
-   ?BLOCK# DUP RESIDENT DUP 0< IF DROP FREE-BUF 2DUP BUF-ADDR SWAP RL-READ THEN
-   TUCK >BLK ! DUP TOUCH BUF-ADDR ;
+   ?BLOCK# BUF-MRU @ DUP >BLK @ 2 PICK = IF NIP BUF-ADDR EXIT THEN DROP
+   DUP RESIDENT DUP 0< IF DROP FREE-BUF 2DUP BUF-ADDR SWAP RL-READ THEN
+   TUCK >BLK ! DUP TOUCH BUF-ADDR ;   \ (the first line: the most recent, fast)
 : BLOCK ( blk -- addr ) \ the buffer holding blk, read if needed; UPDATE's block
    DUP (BLOCK) SWAP CUR-BLK ! ;
 : UPDATE ( -- ) \ mark the block last given by BLOCK or BUFFER as changed

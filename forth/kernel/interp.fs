@@ -43,7 +43,7 @@
   FORTH-BODY @ (FIND) ;
 : FIND  ( ca -- ca 0 | xt 1 | xt -1 )
   DUP COUNT SEARCH-NAME ?DUP IF NIP DUP NAME> SWAP C@ 128 AND IF 1 ELSE -1 THEN THEN ;
-: '  ( "name" -- xt )  PARSE-NAME SEARCH-NAME ?DUP 0= IF -13 THROW THEN NAME> ;
+: TICK  ( "name" -- xt )  PARSE-NAME SEARCH-NAME ?DUP 0= IF -13 THROW THEN NAME> ;
 
 \ ---- compiling ---------------------------------------------------------------------
 \ Control-flow items carry tags: 1 orig, 2 dest, 3 do-sys, 4 colon-sys; a
@@ -80,8 +80,12 @@ VARIABLE SBUF  ( -- a ) \ offset of the buffer used last
   SBUF @ 128 XOR DUP SBUF ! SBUFS +  >R
   [CHAR] " PARSE 128 MIN R@ SWAP DUP >R CMOVE 2R> ;  IMMEDIATE
 : [CHAR]  ( "c" -- )  CHAR POSTPONE LITERAL ;  IMMEDIATE COMPILE-ONLY
-: [']  ( "name" -- )  ' POSTPONE LITERAL ;  IMMEDIATE COMPILE-ONLY
-: [COMPILE]  ( "name" -- )  ' , ;  IMMEDIATE COMPILE-ONLY
+: [']  ( "name" -- )  TICK POSTPONE LITERAL ;  IMMEDIATE COMPILE-ONLY
+: [COMPILE]  ( "name" -- )  TICK , ;  IMMEDIATE COMPILE-ONLY
+\ ' is FORTH-79's: IMMEDIATE, and inside a definition it compiles the address
+\ as a literal (block 1008: : Install.Int.Servo ... ' Interrupt.Servo 100O ! ...).
+\ Forth-94 programs use ['] there; TICK is the plain parsing word.
+: '  ( "name" -- xt )  TICK STATE @ IF POSTPONE LITERAL THEN ;  IMMEDIATE
 : POSTPONE  ( "name" -- )
   PARSE-NAME SEARCH-NAME ?DUP 0= IF -13 THROW THEN
   DUP NAME> SWAP C@ 128 AND IF , ELSE POSTPONE LITERAL ['] COMPILE, , THEN ;
@@ -115,7 +119,7 @@ DODOES CONSTANT 'DODOES  ( -- a )
 : DOES>  ( -- )  ['] (DOES>) , JSR-IP , 'DODOES , ;  IMMEDIATE COMPILE-ONLY
 : VALUE  ( x "name" -- )  CONSTANT ;
 : TO  ( x "name" -- )
-  ' >BODY STATE @ IF POSTPONE LITERAL ['] ! , ELSE ! THEN ;  IMMEDIATE
+  TICK >BODY STATE @ IF POSTPONE LITERAL ['] ! , ELSE ! THEN ;  IMMEDIATE
 : :  ( "name" -- colon-sys )  \ also ends an open CODE word (block 1008)
   ?END-CODE  CURRENT @ CONTEXT !  ALIGN HERE COLON-LFA !
   PARSE-NAME HEADER, SMUDGE  'DOCOL JSR-IP CF,  4 ] ;

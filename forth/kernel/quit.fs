@@ -79,8 +79,10 @@ VARIABLE BEST  ( -- a )
   'ON-ERROR @ ?DUP IF EXECUTE THEN  S0 SP! ;
 
 \ ---- QUIT --------------------------------------------------------------------------
+: .LOST  ( -- )  \ say so when the console ring overflowed
+  RXLOST @ ?DUP IF CR U. ." characters lost: typed too far ahead" CR  0 RXLOST ! THEN ;
 : QUERY  ( -- )  \ a line from the terminal becomes the source
-  TIB TIB-SIZE 1- ACCEPT  TIB SWAP SRC 2!  0 >IN !  0 BLK !  0 SOURCE-ID !  SPACE ;
+  TIB TIB-SIZE 1- ACCEPT  TIB SWAP SRC 2!  0 >IN !  0 BLK !  0 SOURCE-ID !  SPACE .LOST ;
 : INTERPRET-LINE  ( -- )  QUERY INTERPRET ;
 : QUIT  ( -- )  \ read, interpret, report: forever
   RP0 RP!  0 HANDLER !  POSTPONE [  0 BLK !

@@ -3,13 +3,7 @@
 \   gforth forth/meta/build.fs -e bye
 \ Exits non-zero, naming file and line, on any error or unresolved reference.
 
-warnings off   \ gforth has its own A, and A!: ours are meant
-require image.fs
-include ../asm-host.fs
-require meta.fs
-require defs.fs
-require compile.fs
-require kmacros.fs
+require load.fs
 
 : file-exists? ( addr u -- f )  r/o open-file if drop false else close-file throw true then ;
 : kernel ( addr u -- )  meta-include ;

@@ -35,6 +35,7 @@ get-current  metac-wl set-current
 : +LOOP ( do-sys -- )  3 pair? [t] (+LOOP) t, dup 2 + t, there swap t! ;
 : LITERAL ( n -- )  t-literal ;
 : ['] ( "name" -- )  parse-name tcfa-of t-literal ;
+: ' ( "name" -- )  parse-name tcfa-of t-literal ;  \ the target's ' is FORTH-79's
 : [CHAR] ( "c" -- )  parse-name drop c@ t-literal ;
 : ." ( "ccc"" -- )  [t] (.") t, [char] " parse t-string ;
 : S" ( "ccc"" -- )  [t] (S") t, [char] " parse t-string ;

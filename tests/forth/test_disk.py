@@ -200,3 +200,26 @@ def test_seek_selects_cylinder_and_head(image, boot):
     for n in (115, 105, 10239, 0, 31):
         m.send(f"{n} BUFFER DROP UPDATE FLUSH")
         assert m.send("4 RL-DO DROP RLMP @ 6 RSHIFT .").split() == [str(n // 10)]
+
+
+def test_update_in_a_loaded_block_marks_the_block_asked_for(image, boot):
+    # Parsing the rest of the line re-reads the source block (SOURCE); that
+    # must not make UPDATE mark the block being loaded instead of block 100.
+    put_block(image, 70, ["CHAR A 100 BLOCK C!  UPDATE"])
+    source = get_block(image, 70)
+    m = boot()
+    m.send("70 LOAD FLUSH")
+    m.close()
+    assert get_block(image, 100)[:1] == b"A"
+    assert get_block(image, 70) == source
+
+
+def test_a_controller_that_never_finishes_is_an_error_not_a_hang(tmp_path):
+    # SIMH's seek time per cylinder raised so far that a full-stroke seek takes
+    # 51 million instructions: the driver gives up (65536 polls) and says so.
+    with Machine(disk=blank_disk(tmp_path / "slow.dsk"),
+                 extra_commands="deposit rl stime 100000\n") as m:
+        r = m.reply("10239 BLOCK")
+        assert not r.ok and r.error.startswith("block read error")
+        assert "RL0 block 10239 read timed out: CSR=" in r.output
+        assert m.send("1 2 + .").split() == ["3"]

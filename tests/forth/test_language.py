@@ -140,3 +140,41 @@ def test_code_words_with_the_resident_assembler(forth):
     assert forth.send("1 2 + .") == "3 "
     forth.send(": KONST CREATE , ;CODE S -) W ) MOV, NEXT, END-CODE")
     assert forth.send("5 KONST FIVE FIVE .") == "5 "
+
+
+def test_harness_reports_a_halt():
+    """A HALT reaches the simulator prompt: the harness says so, not a timeout."""
+    import pytest
+    from harness.machine import Machine, MachineHalted
+    with Machine() as m:
+        with pytest.raises(MachineHalted):
+            m.send("CODE STOP HALT, END-CODE STOP")
+
+
+def test_interrupt_handler_in_code_then_forget(forth):
+    """The appendix's pattern: register-saving macros as colon definitions that
+    assemble, a CODE word ending in RTI installed with ' into the clock vector
+    (the stock 11/23 clock always interrupts at 60 Hz), FORGET restores it."""
+    forth.send_lines("""MARKER CLOCK-TEST
+: Save-Regs ASSEMBLER RP -) R0 MOV, RP -) T MOV, RP -) W MOV, FORTH ;
+: Restore-Regs ASSEMBLER W RP )+ MOV, T RP )+ MOV, R0 RP )+ MOV, FORTH ;
+VARIABLE TICKS
+CODE Tick Save-Regs TICKS @# INC, Restore-Regs RTI,
+: Install ' Tick 100O ! ;
+: WAIT-TICKS ( n -- ) TICKS @ + BEGIN DUP TICKS @ - 0< UNTIL DROP ;""")
+    forth.send("Install 3 WAIT-TICKS")
+    assert int(forth.send("TICKS @ .")) >= 3
+    assert "vector 000100 restored" in forth.send("CLOCK-TEST")
+    assert forth.send("100O @ 1100O = .") == "-1 "
+
+
+def test_ring_overflow_is_reported(forth):
+    """More than 256 characters typed while a word runs: the excess is dropped
+    and the loss is reported at the next line."""
+    forth.send(": BUSY2 10 0 DO 30000 0 DO LOOP LOOP ;")
+    forth.child.send("BUSY2\r" + ("1 DROP " * 11 + "\r") * 5)
+    forth.child.expect("characters lost: typed too far ahead")
+    forth.child.send("\r")  # ends whatever line the ring cut short
+    forth.child.send(".( in step)\r")
+    forth.child.expect(r"in step ok\r\n")
+    assert forth.send("2 2 + .") == "4 "
