@@ -1,0 +1,21 @@
+"""argparse types shared by the subcommands: a bad value is a usage error
+(exit 2) that names the value and says what was expected."""
+import argparse
+import math
+
+
+def number_above(kind, low, what):
+    """A converter to `kind` (int or float) accepting values > low."""
+    def convert(text):
+        try:
+            value = kind(text)
+        except ValueError:
+            value = None
+        if value is None or not value > low or not math.isfinite(value):
+            raise argparse.ArgumentTypeError(f"{text!r}: expected {what}")
+        return value
+    return convert
+
+
+positive = number_above(float, 0, "a positive number")
+count = number_above(int, 0, "a whole number >= 1")

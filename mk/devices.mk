@@ -1,0 +1,44 @@
+# mk/devices.mk: build/pdp11, SIMH's PDP-11 simulator with the robot's devices
+# (pdp11-devices/), and build/plant_test, the plant physics tested alone.
+#
+# SIMH's files are compiled unpatched. The stock objects are shared with
+# build/pdp11-stock, except pdp11_sys.c, compiled again with its device table
+# renamed (stock_sim_devices): pdp11-devices/robot_sys.c defines the table
+# SIMH uses (see its header).
+ROBOT_OBJ  := $(BUILD)/obj/robot
+DEV_DIR    := pdp11-devices
+DEV_HDRS   := $(wildcard $(DEV_DIR)/*.h)
+DEV_GLUE   := $(filter-out $(DEV_DIR)/plant_test.c,$(wildcard $(DEV_DIR)/*.c))
+DEV_OBJS   := $(patsubst $(DEV_DIR)/%.c,$(ROBOT_OBJ)/%.o,$(DEV_GLUE))
+ROBOT_SYS  := $(ROBOT_OBJ)/pdp11_sys_stock.o
+ROBOT_SIMH_OBJS := $(filter-out $(STOCK_OBJ)/PDP11/pdp11_sys.o,$(STOCK_OBJS)) $(ROBOT_SYS)
+# Our own code gets warnings; SIMH's headers need its flags.
+DEV_CFLAGS := $(filter-out -w,$(SIMH_CFLAGS)) -Wall -Wno-unused-function
+PLANT_CFLAGS := -std=c99 -O2 -g -Wall -Wextra
+
+$(ROBOT_SYS): $(SIMH_STAMP)
+	@mkdir -p $(dir $@)
+	@$(CC) $(SIMH_CFLAGS) -Dsim_devices=stock_sim_devices -c $(SIMH_SRC)/PDP11/pdp11_sys.c -o $@
+
+$(ROBOT_OBJ)/plant.o: $(DEV_DIR)/plant.c $(DEV_DIR)/plant.h
+	@mkdir -p $(dir $@)
+	@$(CC) $(PLANT_CFLAGS) -c $< -o $@
+
+$(ROBOT_OBJ)/%.o: $(DEV_DIR)/%.c $(DEV_HDRS) $(SIMH_STAMP)
+	@mkdir -p $(dir $@)
+	@$(CC) $(DEV_CFLAGS) -I $(DEV_DIR) -c $< -o $@
+
+$(BUILD)/pdp11: $(ROBOT_SIMH_OBJS) $(DEV_OBJS)
+	@echo "==> linking the robot's PDP-11/23 simulator: $@"
+	@$(CC) -o $@ $^ $(SIMH_LIBS)
+
+$(BUILD)/plant_test: $(DEV_DIR)/plant_test.c $(ROBOT_OBJ)/plant.o
+	@$(CC) $(PLANT_CFLAGS) -o $@ $^ -lm
+
+# pdp11-stock too: the reference the benchmark and tests/test_simh_stock.py use.
+ALL_PRODUCTS += $(BUILD)/pdp11 $(BUILD)/plant_test $(BUILD)/pdp11-stock
+
+bench-devices: $(BUILD)/pdp11 $(BUILD)/pdp11-stock venv
+	@$(PY) harness/bench_devices.py
+BENCHES += bench-devices
+.PHONY: bench-devices

@@ -1,0 +1,182 @@
+/* kw11l.c: KW11-L line clock (SIMH device CLK) and the simulated time base.
+
+   Register (DESIGN.md section 2), 177546 LKS, vector 100, BR6:
+     bit 7  MONITOR  set by every tick; cleared by writing a 0 to it (a 1
+                     written leaves it as it is); 0 at power-up and bus INIT
+     bit 6  INT ENB  read/write; 0 at power-up and bus INIT
+     other bits read 0; a write to the high byte changes nothing.
+   A tick with INT ENB set requests an interrupt at vector 100 (BR6); clearing
+   INT ENB withdraws a request not yet taken. Setting INT ENB between ticks
+   does not interrupt: only ticks do.
+
+   Unlike SIMH's stock clock (pdp11_stddev.c, calibrated against the host's
+   wall clock, register missing and interrupts forced on for an 11/23), this
+   one ticks exactly 60 times per simulated second: tick n comes after
+   floor(n * RATE / 60) executed instructions, whatever the host does. Bus
+   INIT does not restart the series (the mains keep running).
+
+   Time base: simulated seconds = instructions / RATE (SET CLK RATE=n,
+   default 300000, the KDF11-A's typical speed). Changing RATE keeps the time
+   continuous: pending ticks and trace samples keep their simulated times. SIMH's SET THROTTLE paces the run to the wall clock when asked;
+   nothing here reads the host's clock.
+
+   Devices SIMH paces from the clock (console polling, RQ's timer) read
+   tmr_poll/tmxr_poll: they are set to RATE/60 instructions, a constant. */
+#include "robot.h"
+
+extern int32 int_req[IPL_HLVL];
+extern int32 tmr_poll, tmxr_poll;
+
+#define LKS_MON  0200
+#define LKS_IE   0100
+#define RATE_MIN 1000
+#define RATE_MAX 100000000
+#define TICKS_PER_S 60
+
+int32 robot_rate = 300000;
+static double base_time_s, base_instr;  /* time base, rebased when RATE changes */
+static int32 lks;
+static int32 tick_acc;                  /* remainder of the exact tick series */
+static uint32 ticks;                    /* ticks since power-up */
+
+static t_stat kwl_rd (int32 *data, int32 PA, int32 access);
+static t_stat kwl_wr (int32 data, int32 PA, int32 access);
+static t_stat kwl_svc (UNIT *uptr);
+static t_stat kwl_reset (DEVICE *dptr);
+static t_stat kwl_set_rate (UNIT *uptr, int32 val, char *cptr, void *desc);
+static t_stat kwl_show_rate (FILE *st, UNIT *uptr, int32 val, void *desc);
+static t_stat kwl_show_state (FILE *st, UNIT *uptr, int32 val, void *desc);
+
+double robot_time (void)
+{
+    return base_time_s + (sim_gtime () - base_instr) / (double) robot_rate;
+}
+
+void robot_rescale (UNIT *uptr, int32 old_rate)
+{
+    int32 left = sim_is_active (uptr);          /* instructions to go, plus one */
+    if (left > 0) {
+        double t = (double) (left - 1) * robot_rate / old_rate;
+        sim_cancel (uptr);
+        sim_activate (uptr, (int32) (t + 0.5));
+    }
+}
+
+int32 robot_share (int32 per_second, int32 *acc)
+{
+    int32 n;
+    *acc += robot_rate;
+    n = *acc / per_second;
+    *acc -= n * per_second;
+    return n > 0 ? n : 1;
+}
+
+static DIB kwl_dib = {
+    IOBA_CLK, IOLN_CLK, &kwl_rd, &kwl_wr,
+    1, IVCL (CLK), VEC_CLK, { NULL }
+};
+
+static UNIT kwl_unit = { UDATA (&kwl_svc, 0, 0) };
+
+static REG kwl_reg[] = {
+    { ORDATA (LKS, lks, 16) },
+    { FLDATA (INT, IREQ (CLK), INT_V_CLK) },
+    { FLDATA (MON, lks, 7) },
+    { FLDATA (IE, lks, 6) },
+    { DRDATA (RATE, robot_rate, 32), PV_LEFT + REG_RO },
+    { DRDATA (TICKS, ticks, 32), PV_LEFT + REG_RO },
+    { NULL }
+};
+
+static MTAB kwl_mod[] = {
+    { MTAB_XTD|MTAB_VDV, 0, "RATE", "RATE", &kwl_set_rate, &kwl_show_rate, NULL },
+    { MTAB_XTD|MTAB_VDV, 0, "STATE", NULL, NULL, &kwl_show_state, NULL },
+    { MTAB_XTD|MTAB_VDV, 0, "ADDRESS", NULL, NULL, &show_addr, NULL },
+    { MTAB_XTD|MTAB_VDV, 0, "VECTOR", NULL, NULL, &show_vec, NULL },
+    { 0 }
+};
+
+DEVICE kwl_dev = {
+    "CLK", &kwl_unit, kwl_reg, kwl_mod,
+    1, 0, 0, 0, 0, 0,
+    NULL, NULL, &kwl_reset,
+    NULL, NULL, NULL,
+    &kwl_dib, DEV_UBUS | DEV_QBUS
+};
+
+static t_stat kwl_rd (int32 *data, int32 PA, int32 access)
+{
+    *data = lks & (LKS_MON | LKS_IE);
+    return SCPE_OK;
+}
+
+static t_stat kwl_wr (int32 data, int32 PA, int32 access)
+{
+    if ((access == WRITEB) && (PA & 1))          /* high byte: no bits there */
+        return SCPE_OK;
+    if ((data & LKS_MON) == 0)
+        lks &= ~LKS_MON;
+    lks = (lks & ~LKS_IE) | (data & LKS_IE);
+    if ((lks & LKS_IE) == 0)
+        CLR_INT (CLK);
+    return SCPE_OK;
+}
+
+static t_stat kwl_svc (UNIT *uptr)
+{
+    ticks++;
+    lks |= LKS_MON;
+    if (lks & LKS_IE)
+        SET_INT (CLK);
+    sim_activate (uptr, robot_share (TICKS_PER_S, &tick_acc));
+    return SCPE_OK;
+}
+
+static t_stat kwl_reset (DEVICE *dptr)
+{
+    lks = 0;
+    CLR_INT (CLK);
+    tmr_poll = tmxr_poll = robot_rate / TICKS_PER_S;
+    if (!sim_is_active (&kwl_unit))              /* power-up: start the series */
+        sim_activate (&kwl_unit, robot_share (TICKS_PER_S, &tick_acc));
+    return SCPE_OK;
+}
+
+static t_stat kwl_set_rate (UNIT *uptr, int32 val, char *cptr, void *desc)
+{
+    char *end;
+    long r;
+    int32 old;
+    if (cptr == NULL || *cptr == 0)
+        return SCPE_MISVAL;
+    r = strtol (cptr, &end, 10);
+    if (*end != 0 || r < RATE_MIN || r > RATE_MAX) {
+        printf ("RATE must be a whole number of instructions per second, %d..%d\n",
+                RATE_MIN, RATE_MAX);
+        return SCPE_ARG;
+    }
+    plant_dev_catch_up ();                       /* the plant lives in the old time */
+    base_time_s = robot_time ();
+    base_instr = sim_gtime ();
+    old = robot_rate;
+    robot_rate = (int32) r;
+    tmr_poll = tmxr_poll = robot_rate / TICKS_PER_S;
+    robot_rescale (&kwl_unit, old);              /* the next tick keeps its time */
+    tick_acc = 0;
+    plant_dev_rate_changed (old);
+    console_pacing_rate_changed ();
+    return SCPE_OK;
+}
+
+static t_stat kwl_show_rate (FILE *st, UNIT *uptr, int32 val, void *desc)
+{
+    fprintf (st, "rate=%d instructions/s", robot_rate);
+    return SCPE_OK;
+}
+
+static t_stat kwl_show_state (FILE *st, UNIT *uptr, int32 val, void *desc)
+{
+    fprintf (st, "LKS=%06o (IE=%d MON=%d), %.0f ticks, time=%.6fs", lks,
+             (lks & LKS_IE) != 0, (lks & LKS_MON) != 0, (double) ticks, robot_time ());
+    return SCPE_OK;
+}

@@ -1,0 +1,36 @@
+/* robot.h: what the project's SIMH device files share (glue only; the
+   physics is plant.h). See robot_sys.c for how they join SIMH. */
+#ifndef ROBOT_H
+#define ROBOT_H
+
+#include "pdp11_defs.h"
+#include "plant.h"
+
+/* Time base (kw11l.c): simulated time = executed instructions / rate. */
+extern int32 robot_rate;                 /* instructions per simulated second */
+double robot_time (void);                /* simulated seconds since power-up */
+int32 robot_share (int32 per_second, int32 *acc);  /* next interval of an exact n/s series */
+void robot_rescale (UNIT *uptr, int32 old_rate);   /* keep an event's simulated time */
+
+/* Plant glue (plant_dev.c): the plant as the bus devices see it. */
+extern plant robot_plant;
+void plant_dev_catch_up (void);                   /* integrate up to now */
+void plant_dev_dac (int axis, int code);          /* AAV11-A wrote a channel */
+void plant_dev_run_lines (int lines);             /* DRV11 OUTBUF bits 3:0 */
+uint16 plant_dev_counter (int axis);              /* DRV11 INBUF */
+void plant_dev_init (void);
+void plant_dev_rate_changed (int32 old_rate);                        /* power-up state */
+void plant_dev_command_done (void);               /* after each SCP command */
+
+/* Console input pacing (console_pacing.c). */
+void console_pacing_install (void);
+void console_pacing_rate_changed (void);
+
+extern DEVICE kwl_dev, drv_dev, aav_dev, plant_dev;
+
+/* Byte writes (SIMH passes the byte in data<7:0>, PA<0> says which half). */
+#define MERGE_BYTE(old, data, pa, access) \
+    (((access) == WRITEB) ? (((pa) & 1) ? (((old) & 0377) | (((data) & 0377) << 8)) \
+                                        : (((old) & ~0377) | ((data) & 0377))) : (data))
+
+#endif

@@ -1,0 +1,65 @@
+/* robot_sys.c: how the project's devices join SIMH 3.8.1 without patching it.
+
+   Device table. SIMH's scp.c walks sim_devices[] (defined by pdp11_sys.c).
+   The build compiles pdp11_sys.c a second time with
+   -Dsim_devices=stock_sim_devices, so its table keeps its contents under
+   another name, and this file defines the sim_devices[] SIMH uses. It is
+   filled at start-up from the stock list: SIMH's CLK (clk_dev, the
+   wall-calibrated line clock) is replaced, in its place, by the project's
+   KW11-L (kw11l.c, also named CLK); DRV11, AAV11 and PLANT are appended.
+   Everything else is SIMH's own, in SIMH's order.
+
+   What still refers to the stock clock: pdp11_cpumod.c sets clk_fie,
+   clk_fnxm and clk_tps when the CPU model changes, and pdp11_dz.c calls
+   clk_cosched(). Those are variables and functions of pdp11_stddev.c that
+   only the stock clk_dev's own routines act on; with clk_dev out of the
+   table its register, interrupt and service are never installed, so they
+   change nothing. tmr_poll and tmxr_poll (console, DZ, RQ timing) are set by
+   kw11l.c to the constant RATE/60. sim_idle(TMR_CLK) (SET CPU IDLE) never
+   idles: the calibrated timer it needs is never started.
+
+   Hooks. scp.c declares `void (*sim_vm_init)(void)` without initialising it
+   and calls it first thing in main(); with -fcommon this file's initialised
+   definition is the one linked. robot_vm_init fills the table, replaces the
+   console keyboard's service routine (console_pacing.c) and installs
+   sim_vm_post, which scp.c calls after every command (used to end a
+   SET PLANT axis selection). */
+#include "robot.h"
+
+#define MAX_DEVICES 96
+
+extern DEVICE *stock_sim_devices[];
+extern DEVICE clk_dev;
+extern void (*sim_vm_post) (t_bool from_scp);
+
+DEVICE *sim_devices[MAX_DEVICES + 1];
+
+static void robot_vm_post (t_bool from_scp)
+{
+    plant_dev_command_done ();
+}
+
+static void add_device (int *n, DEVICE *d)
+{
+    if (*n >= MAX_DEVICES) {
+        fprintf (stderr, "robot_sys: device table full (MAX_DEVICES)\n");
+        exit (1);
+    }
+    sim_devices[(*n)++] = d;
+}
+
+static void robot_vm_init (void)
+{
+    int n = 0;
+    for (int i = 0; stock_sim_devices[i] != NULL; i++)
+        add_device (&n, stock_sim_devices[i] == &clk_dev ? &kwl_dev : stock_sim_devices[i]);
+    add_device (&n, &drv_dev);
+    add_device (&n, &aav_dev);
+    add_device (&n, &plant_dev);
+    sim_devices[n] = NULL;
+    plant_dev_init ();
+    console_pacing_install ();
+    sim_vm_post = &robot_vm_post;
+}
+
+void (*sim_vm_init) (void) = &robot_vm_init;

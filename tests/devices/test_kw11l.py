@@ -1,0 +1,66 @@
+"""KW11-L line clock (CLK): register bits, INIT, exactly 60 ticks per simulated
+second, interrupts at vector 100 only with IE set and priority below 6."""
+import pytest
+
+from harness import simh
+from harness.pdp11prog import results, examine_results
+import programs
+
+RATE = 300000
+
+
+def test_lks_register_bits_bytes_and_init():
+    out = simh.run(programs.lks_bits().script() + examine_results(9))
+    assert "HALT instruction" in out
+    assert results(out, 9) == [0o100, 0, 0, 0o100, 0, 0o200, 0o200, 0o100, 0]
+
+
+def count_ticks(instructions, enable=True, psw=0, extra=""):
+    prog = programs.clock_counter(enable)
+    out = simh.run(extra + prog.script(psw=psw, start=False) +
+                   f"step {instructions}\n" + examine_results(1) + "examine clk ticks\n")
+    assert "Step expired" in out, out          # no stray trap halted it
+    return results(out, 1)[0], simh.examined(out, radix=10)["TICKS"]
+
+
+def test_exactly_600_ticks_in_10_simulated_seconds():
+    half_tick = RATE // 120
+    assert count_ticks(10 * RATE + half_tick) == (600, 600)
+    assert count_ticks(10 * RATE - half_tick) == (599, 599)
+
+
+def test_rate_is_settable_and_ticks_follow_it():
+    assert count_ticks(5 * 150000 + 1250, extra="set clk rate=150000\n") == (300, 300)
+
+
+@pytest.mark.parametrize("psw,expected", [(0o000, 60), (0o240, 60), (0o300, 0), (0o340, 0)])
+def test_interrupts_only_below_priority_6(psw, expected):
+    got, ticks = count_ticks(RATE + 2500, psw=psw)
+    assert (got, ticks) == (expected, 60)
+
+
+def test_no_interrupts_with_ie_clear_but_monitor_set():
+    prog = programs.clock_counter(enable=False)
+    out = simh.run(prog.script(start=False) + f"step {RATE}\n" + examine_results(1) +
+                   "examine clk lks\n")
+    assert results(out, 1) == [0]
+    assert simh.examined(out)["LKS"] == 0o200
+
+
+def test_bad_rate_is_refused_and_kept():
+    out = simh.run("set clk rate=12x\nset clk rate=0\nset clk rate=-5\nshow clk rate\n")
+    assert out.count("Invalid argument") == 3
+    assert "rate=300000 instructions/s" in out
+
+
+def test_throttle_is_available():
+    out = simh.run("set throttle 300k\nshow throttle\nset nothrottle\n")
+    assert "Throttle = 300 kilocycles" in out
+
+
+def test_changing_rate_mid_run_keeps_time_and_ticks_continuous():
+    prog = programs.clock_counter()
+    out = simh.run(prog.script(start=False) + f"step {RATE}\nset clk rate=150000\n"
+                   "step 150000\nexamine clk ticks\nshow clk state\n")
+    assert simh.examined(out, radix=10)["TICKS"] == 119     # the 120th lands at 2.000 s
+    assert "time=2.000000s" in out

@@ -1,0 +1,113 @@
+"""The figures, inspected as matplotlib objects (axes, series, labels), and the
+files they are saved to."""
+import xml.etree.ElementTree as ET
+
+import numpy as np
+import pytest
+
+from harness import moves as mv
+from harness import plots, trace
+
+PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
+
+
+@pytest.fixture(scope="module")
+def tr(servo_trace):
+    return trace.read(servo_trace)
+
+
+def lines_by_label(ax):
+    return {line.get_label(): line for line in ax.get_lines()}
+
+
+def texts(ax):
+    return {t.get_text() for t in ax.texts}
+
+
+def test_moves_figure_long_and_short_side_by_side(tr):
+    fig = plots.moves_figure(tr, "X")
+    panels = [ax for ax in fig.axes if ax.get_lines()]
+    assert len(panels) == 2
+    assert "Figure 2" in fig.get_suptitle() and "Axis X" in fig.get_suptitle()
+    x = tr.axis("X")
+    long_, short = mv.long_and_short(mv.find_moves(x))
+    for ax, move, name in zip(panels, (long_, short), ("long move", "short move")):
+        assert ax.get_title().startswith(name)
+        assert "counts" in ax.get_xlabel() and "counts/s" in ax.get_ylabel()
+        assert {"D0", "D1", "D2", "D3"} <= texts(ax)
+        assert ax.get_legend() is not None
+        series = lines_by_label(ax)
+        cmd, act = series["commanded velocity (vcmd)"], series["actual velocity (vel)"]
+        rows = slice(move.first - 1, move.rest + 1)
+        np.testing.assert_allclose(cmd.get_xdata(), (x.pos[rows] - move.d0) * move.direction)
+        np.testing.assert_allclose(cmd.get_ydata(), x.vcmd[rows] * move.direction)
+        np.testing.assert_allclose(act.get_ydata(), x.vel[rows] * move.direction)
+        # the D marks: vertical lines at D0..D3, measured from D0
+        marks = [ln.get_xdata()[0] for ln in ax.get_lines() if ln.get_label().startswith("_")]
+        expected = [(d - move.d0) * move.direction for d in (move.d0, move.d1, move.d2, move.d3)]
+        np.testing.assert_allclose(marks, expected)
+
+
+def test_moves_figure_one_panel_per_window(tr):
+    x = tr.axis("X")
+    _, short = mv.long_and_short(mv.find_moves(x))
+    fig = plots.moves_figure(tr, "X", windows=[(short.t0 - 0.01, None)])
+    (ax,) = [a for a in fig.axes if a.get_lines()]
+    assert ax.get_title().startswith("move starting in")
+    with pytest.raises(plots.PlotError, match="no move on axis X starts in 50"):
+        plots.moves_figure(tr, "X", windows=[(50, 60)])
+    with pytest.raises(plots.PlotError, match="no moves on axis Y"):
+        plots.moves_figure(tr, "Y")
+
+
+def test_time_figure_rows_per_axis(tr):
+    fig = plots.time_figure(tr, "XY", windows=[(0.5, 1.5)])
+    assert len(fig.axes) == 4
+    pos_x, vel_x, pos_y, _ = fig.axes
+    assert pos_x.get_title() == "axis X: position" and pos_y.get_title() == "axis Y: position"
+    assert pos_x.get_ylabel() == "position, counts" and vel_x.get_ylabel() == "velocity, counts/s"
+    assert all(ax.get_xlabel() == "simulated time, s" for ax in fig.axes)
+    assert set(lines_by_label(vel_x)) == {"commanded velocity (vcmd)", "actual velocity (vel)"}
+    t = lines_by_label(pos_x)["position (pos)"].get_xdata()
+    assert t.min() >= 0.5 and t.max() <= 1.5
+
+
+def test_zero_figure_held_codes_and_offsets(tr):
+    fig = plots.zero_figure(tr, "XY", offsets={"X": 3.0})
+    ax_x, ax_y = fig.axes
+    assert ax_x.get_ylabel() == "DAC code (2048 = 0 V)" and "0-Vel" in fig.get_suptitle()
+    series = lines_by_label(ax_x)
+    held = series["DAC code while held idle (0-Vel)"]
+    t, codes = mv.held_codes(tr.axis("X"))
+    np.testing.assert_array_equal(held.get_xdata(), t)
+    np.testing.assert_array_equal(held.get_ydata(), codes)
+    (given,) = [ln for label, ln in series.items() if label.startswith("2048 + given offset")]
+    assert list(given.get_ydata()) == [2051.0, 2051.0]
+    assert any(label.startswith("plant's zero from the trace") for label in series)
+    # y: one code only, so no Kv, no line from the trace, no offset given
+    assert set(lines_by_label(ax_y)) == {"DAC code while held idle (0-Vel)",
+                                         "DAC code, every row"}
+    np.testing.assert_array_equal(series["DAC code, every row"].get_ydata(), tr.axis("X").dac)
+
+
+def test_save_writes_valid_png_and_svg(tr, tmp_path):
+    fig = plots.time_figure(tr, "X")
+    png, svg = tmp_path / "f.png", tmp_path / "f.svg"
+    plots.save(fig, [png, svg])
+    assert png.read_bytes()[:8] == PNG_MAGIC
+    assert ET.parse(svg).getroot().tag == "{http://www.w3.org/2000/svg}svg"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["f.png", "f.svg"]
+
+
+def test_save_failure_leaves_nothing(tr, tmp_path):
+    fig = plots.time_figure(tr, "X")
+    with pytest.raises(ValueError):
+        plots.save_all([(fig, [tmp_path / "ok.png", tmp_path / "bad.xyz"])])
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_same_figure_same_svg(tr, tmp_path):
+    """Built and saved twice, a figure gives the same bytes (fixed SVG ids, no date)."""
+    for name in ("a.svg", "b.svg"):
+        plots.save(plots.zero_figure(tr, "Y"), [tmp_path / name])
+    assert (tmp_path / "a.svg").read_bytes() == (tmp_path / "b.svg").read_bytes()
