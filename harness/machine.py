@@ -19,14 +19,16 @@ from pathlib import Path
 import pexpect
 
 ROOT = Path(__file__).resolve().parent.parent
-SIMULATOR = ROOT / os.environ.get("PDP11_SIM", "build/pdp11-stock")
+SIMULATOR = ROOT / os.environ.get("PDP11_SIM", "build/pdp11")
 KERNEL = ROOT / "build" / "kernel.lda"
 MACHINE_INI = ROOT / "pdp11-devices" / "machine.ini"
 RL02_BYTES = 10_485_760  # 512 cylinders x 2 heads x 40 sectors x 256 bytes
 
-# SIMH polls the console keyboard once per calibrated clock tick unless the
-# unit has its own wait: one character per 1/60 s would make a 1000-line
-# test take minutes. Poll every 2000 instructions instead.
+# build/pdp11 polls the keyboard deterministically (pdp11-devices/console_pacing.c):
+# every RATE/960 instructions while characters arrive, queueing them in a FIFO
+# until the FORTH has read the previous one (nothing is lost), and once per
+# tick (RATE/60) when idle. A nonzero TTI TIME replaces that idle interval:
+# the first character of each line is then seen within 2000 instructions.
 FAST_KEYBOARD = "deposit tti time 2000"
 
 OK = re.compile(r" ok\r\n")
@@ -119,7 +121,7 @@ class Machine:
             return Reply(True, text)
         if i == 1:
             return Reply(False, text, self.child.match.group(1))
-        self._stopped(line, i + 1 if i >= 2 else i)
+        self._stopped(line, i - 1)  # 2 sim>, 3 EOF, 4 timeout -> as _stopped counts
 
     def send(self, line, timeout=None):
         """Send one line; its output, or ForthError if it failed."""

@@ -3,13 +3,13 @@
 #   make kernel        build/kernel.lda + build/kernel.map (seconds)
 #   build/robot.ini    machine.ini + attach the disk + load the kernel + start
 #   make bench-forth   FORTH benchmarks (part of make bench)
-# PDP11_SIM is the simulator the harness and the benchmarks run; switch it to
-# $(BUILD)/pdp11 here (or on the command line) once the project's build lands.
-PDP11_SIM  ?= $(BUILD)/pdp11-stock
+# PDP11_SIM is the simulator the harness and the benchmarks run: the project's
+# build/pdp11, the only one with the robot's devices (KW11-L, DRV11, AAV11-A).
+PDP11_SIM  ?= $(BUILD)/pdp11
 ROBOT_DISK ?= local/robot.dsk
 export PDP11_SIM
 
-FORTH_SRC := $(wildcard forth/meta/*.fs forth/kernel/*.fs) forth/asm.fs forth/asm-host.fs
+FORTH_SRC := $(wildcard forth/meta/*.fs forth/kernel/*.fs) forth/asm.fs forth/asm-host.fs forth/asm-target.fs
 
 $(BUILD)/kernel.lda: $(FORTH_SRC)
 	@bash mk/apt-need.sh gforth

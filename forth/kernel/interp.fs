@@ -90,7 +90,9 @@ VARIABLE SBUF  ( -- a ) \ offset of the buffer used last
 
 \ ---- headers and defining words ------------------------------------------------------
 VARIABLE COLON-LFA  ( -- a ) \ header of the definition being compiled
+VARIABLE CODE-OPEN  ( -- a ) \ true while a CODE or ;CODE body is being assembled
 : HEADER,  ( a u -- )  \ link into CURRENT, name as written
+  CODE-OPEN @ IF 2>R END-CODE 2R> THEN  \ a new word ends an open CODE word
   DUP 0= IF -16 THROW THEN  DUP 31 > IF -19 THROW THEN
   ALIGN HERE CURRENT @ @ ,  CURRENT @ !  HERE LAST !
   DUP C, HERE OVER ALLOT SWAP CMOVE ALIGN ;
@@ -107,18 +109,17 @@ DODOES CONSTANT 'DODOES  ( -- a )
 : REVEAL  ( -- )  LAST @ DUP C@ 32 INVERT AND SWAP C! ;
 : CREATE  ( "name" -- )  PARSE-NAME HEADER, 'DOVAR JSR-W CF, ;
 : VARIABLE  ( "name" -- )  CREATE 0 , ;
-: CONSTANT  ( x "name" -- )  PARSE-NAME HEADER, 'DOCON JSR-W CF, , ;
+: CONSTANT  ( x "name" -- )  >R PARSE-NAME HEADER, 'DOCON JSR-W CF, R> , ;
 : CON  ( x "name" -- )  CONSTANT ;
-: VAR  ( x "name" -- )  CREATE , ;
-: ARRAY  ( n "name" -- )  CREATE CELLS DUP ALLOT HERE OVER - SWAP ERASE ;
+: VAR  ( x "name" -- )  >R CREATE R> , ;
+: ARRAY  ( n "name" -- )  >R CREATE R> CELLS DUP ALLOT HERE OVER - SWAP ERASE ;
 : (DOES>)  ( -- )  R> LAST @ NAME> 2+ ! ;  COMPILE-ONLY
 : DOES>  ( -- )  ['] (DOES>) , JSR-IP , 'DODOES , ;  IMMEDIATE COMPILE-ONLY
 : VALUE  ( x "name" -- )  CONSTANT ;
 : TO  ( x "name" -- )
   ' >BODY STATE @ IF POSTPONE LITERAL ['] ! , ELSE ! THEN ;  IMMEDIATE
 : :  ( "name" -- colon-sys )
-  CURRENT @ CONTEXT !  ALIGN HERE COLON-LFA !
-  PARSE-NAME HEADER, SMUDGE  'DOCOL JSR-IP CF,  4 ] ;
+  CURRENT @ CONTEXT !  PARSE-NAME HEADER, LAST @ 2- COLON-LFA !  SMUDGE  'DOCOL JSR-IP CF,  4 ] ;
 : :NONAME  ( -- xt colon-sys )  0 COLON-LFA !  ALIGN HERE 'DOCOL JSR-IP CF, 4 ] ;
 : ;  ( colon-sys -- )
   ['] EXIT ,  4 ?PAIRS  COLON-LFA @ IF REVEAL THEN  0 COLON-LFA !  POSTPONE [ ;
@@ -130,8 +131,10 @@ VOCABULARY FORTH  ( -- ) \ the kernel's vocabulary
 VOCABULARY ASSEMBLER  ( -- ) \ CODE's vocabulary (resident assembler: issue 4)
 : DEFINITIONS  ( -- )  CONTEXT @ CURRENT ! ;
 : CODE  ( "name" -- )  \ header whose code field is the machine code that follows
-  PARSE-NAME HEADER,  [ ' ASSEMBLER >BODY ] LITERAL CONTEXT ! ;
-: END-CODE  ( -- )  CURRENT @ CONTEXT ! ;
+  PARSE-NAME HEADER, LAST @ 2- COLON-LFA !  TRUE CODE-OPEN !
+  [ ' ASSEMBLER >BODY ] LITERAL CONTEXT !  ASM-START ;
+: END-CODE  ( -- )  \ the assembler checks the body (forth/asm.fs)
+  CODE-OPEN @ IF ASM-END  0 CODE-OPEN !  0 COLON-LFA ! THEN  CURRENT @ CONTEXT ! ;
 : ;CODE  ( colon-sys -- )  \ children run the code after it with W = body
-  ['] (DOES>) ,  5726O ,  4 ?PAIRS  REVEAL  POSTPONE [
-  [ ' ASSEMBLER >BODY ] LITERAL CONTEXT ! ;  IMMEDIATE COMPILE-ONLY
+  ['] (DOES>) ,  5726O ,  4 ?PAIRS  REVEAL  POSTPONE [  TRUE CODE-OPEN !
+  [ ' ASSEMBLER >BODY ] LITERAL CONTEXT !  ASM-START ;  IMMEDIATE COMPILE-ONLY

@@ -72,8 +72,9 @@ VARIABLE BEST  ( -- a )
   CR ." Error: " .ERROR-TEXT  ." : " WHAT 2@ TYPE
   BLK @ IF ."  in block " BLK @ . ." line " >IN @ 1- 0 MAX 64 / . THEN CR ;
 : DISCARD-DEFINITION  ( -- )  \ a definition cut short leaves nothing behind
-  STATE @ IF COLON-LFA @ ?DUP IF DUP @ CURRENT @ ! DP !  CURRENT @ @ 2+ LAST ! THEN THEN
-  0 COLON-LFA ! ;
+  STATE @ CODE-OPEN @ OR IF
+    COLON-LFA @ ?DUP IF DUP @ CURRENT @ ! DP !  CURRENT @ @ 2+ LAST ! THEN THEN
+  0 COLON-LFA !  0 CODE-OPEN ! ;
 : RESET-AFTER-ERROR  ( -- )
   DISCARD-DEFINITION  POSTPONE [  0 BLK !  0 SOURCE-ID !  CURRENT @ CONTEXT !
   'ON-ERROR @ ?DUP IF EXECUTE THEN  S0 SP! ;

@@ -62,5 +62,5 @@ VARIABLE COLUMN  ( -- a )
   DP !  CURRENT @ @ 2+ LAST ! ;
 : FORGET  ( "name" -- )
   PARSE-NAME CURRENT @ @ (FIND) ?DUP 0= IF -13 THROW THEN 2- (FORGET) ;
-: MARKER  ( "name" -- )  ALIGN HERE CREATE , DOES> @ (FORGET) ;
+: MARKER  ( "name" -- )  CREATE LAST @ 2- , DOES> @ (FORGET) ;
 : ENVIRONMENT?  ( a u -- false )  2DROP FALSE ;

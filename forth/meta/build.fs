@@ -28,6 +28,8 @@ s" forth/kernel/disk.fs" file-exists? [if]
   s" forth/kernel/nodisk.fs" kernel
 [then]
 s" forth/kernel/editor.fs" file-exists? [if]  s" forth/kernel/editor.fs" kernel  [then]
+s" forth/asm-target.fs" kernel   \ vocabulary ASSEMBLER (forth/ASSEMBLER.md)
+s" forth/kernel/forth79.fs" kernel
 s" forth/kernel/boot.fs" kernel
 
 \ ---- finish: resolve, initialise the kernel's variables, vectors ---------------
