@@ -95,8 +95,8 @@ class Robot:
         return out[:m.start()]
 
     # ---- FORTH lines -------------------------------------------------------------------
-    def reply(self, line, timeout=None):
-        """Give the FORTH one line; (ok, output, error message)."""
+    def _put(self, line):
+        """The line and its CR into the console's receive ring, as if typed."""
         data = line.encode("ascii") + b"\r"
         if len(data) > 128 or b"\n" in data:
             raise ValueError("one line of at most 127 characters")
@@ -106,7 +106,11 @@ class Robot:
             word = padded[k] | padded[k + 1] << 8
             self._sim(f"deposit {self.ring + k:o} {word:o}")
         self._sim(f"deposit {self.rxhead:o} {len(data):o}")
-        out = self._run("cont", timeout).replace("\r", "")
+
+    def reply(self, line, timeout=None):
+        """Give the FORTH one line; (ok, output, error message)."""
+        self._put(line)
+        out = self.finish(timeout)
         if out.startswith(line):
             out = out[len(line):]
         out = out[1:] if out.startswith(" ") else out
@@ -116,6 +120,19 @@ class Robot:
         if not out.endswith(" ok\n"):
             raise MachineHalted(f"no ok after {line!r}: {out!r}")
         return True, out[:-4], ""
+
+    def begin(self, line, seconds):
+        """Give the FORTH a line and run only `seconds` of simulated time; the
+        output so far (for a line that may never finish: see `finish`)."""
+        self._put(line)
+        out = self._sim(f"step {round(seconds * RATE)}", timeout=self.timeout)
+        if not STEPPED.search(out):
+            raise MachineHalted(f"the line {line!r} ended within {seconds} s: {out!r}")
+        return out[:STEPPED.search(out).start()].replace("\r", "")
+
+    def finish(self, timeout=None):
+        """Run on until the FORTH waits for its next line; the output."""
+        return self._run("cont", timeout).replace("\r", "")
 
     def send(self, line, timeout=None):
         ok, out, err = self.reply(line, timeout)
