@@ -110,16 +110,19 @@ class Robot:
     def reply(self, line, timeout=None):
         """Give the FORTH one line; (ok, output, error message)."""
         self._put(line)
-        out = self.finish(timeout)
+        # the DL11 may still be sending the last LF when the breakpoint stops the
+        # machine: it then comes out at the start of the next line's output
+        out = self.finish(timeout).lstrip("\n")
         if out.startswith(line):
             out = out[len(line):]
         out = out[1:] if out.startswith(" ") else out
         err = re.search(r"\nError: ([^\n]*)\n", out)
         if err:
             return False, out, err.group(1)
-        if not out.endswith(" ok\n"):
+        out = out.rstrip("\n")
+        if not out.endswith(" ok"):
             raise MachineHalted(f"no ok after {line!r}: {out!r}")
-        return True, out[:-4], ""
+        return True, out[:-3], ""
 
     def begin(self, line, seconds):
         """Give the FORTH a line and run only `seconds` of simulated time; the

@@ -8,10 +8,12 @@ from harness.machine import KERNEL, SIMULATOR
 from harness.robot import MAP, Robot
 
 DISK = KERNEL.parent / "robot.dsk"
-# Helpers typed at the prompt (not in the blocks): print the four counters and
-# the four cells of one of the appendix's arrays.
+# Helpers typed at the prompt (not in the blocks): print the four counters,
+# the four cells of one of the appendix's arrays, and (with the servo's clock
+# interrupt off) put every DAC at its 0-Vel code so that the axes only creep.
 HELPERS = (": .C ( -- ) 4 0 DO I Read.Counter . LOOP ;",
-           ": A. ( array -- ) 4 0 DO DUP I 2* + @ . LOOP DROP ;")
+           ": A. ( array -- ) 4 0 DO DUP I 2* + @ . LOOP DROP ;",
+           ": HOLD ( -- ) 4 0 DO 0-Vel I 2* + @ VelOut I 2* + ! LOOP ;")
 
 
 def numbers(text):
@@ -30,7 +32,7 @@ def boot(tmp_path):
         disk = tmp_path / f"rl0-{len(robots)}.dsk"
         shutil.copy(DISK, disk)
         path = tmp_path / f"trace-{len(robots)}.csv" if trace else None
-        r = Robot(disk=disk, trace=path)
+        r = Robot(disk=disk, trace=path, timeout=20)  # a hung line fails fast
         r.trace_path = path
         robots.append(r)
         return r
