@@ -32,6 +32,11 @@ STEPPED = re.compile(r"Step expired, PC: (\d+)[^\n]*\n")
 AXES = "XYZT"
 
 
+def numbers(text):
+    """The integers a FORTH line printed."""
+    return [int(w) for w in text.split()]
+
+
 def kernel_symbols(path=MAP):
     """name -> address from build/kernel.map ("oooooo name" lines)."""
     table = {}
@@ -53,6 +58,19 @@ def parse_show_plant(text):
     if set(axes) != set(AXES):
         raise ValueError(f"SHOW PLANT output not understood: {text!r}")
     return axes
+
+
+def ring_commands(line, rxhead, rxtail, ring):
+    """SIMH deposits that put a line and its CR into the FORTH's empty console
+    receive ring (KEY takes from RXTAIL up to RXHEAD), as if it had been typed."""
+    data = line.encode("ascii") + b"\r"
+    if len(data) > 128 or b"\n" in data:
+        raise ValueError("one line of at most 127 characters")
+    padded = data + b"\0" * (len(data) & 1)
+    commands = [f"deposit {rxtail:o} 0"]
+    for k in range(0, len(padded), 2):
+        commands.append(f"deposit {ring + k:o} {padded[k] | padded[k + 1] << 8:o}")
+    return commands + [f"deposit {rxhead:o} {len(data):o}"]
 
 
 class Robot:
@@ -97,15 +115,8 @@ class Robot:
     # ---- FORTH lines -------------------------------------------------------------------
     def _put(self, line):
         """The line and its CR into the console's receive ring, as if typed."""
-        data = line.encode("ascii") + b"\r"
-        if len(data) > 128 or b"\n" in data:
-            raise ValueError("one line of at most 127 characters")
-        padded = data + b"\0" * (len(data) & 1)
-        self._sim(f"deposit {self.rxtail:o} 0")
-        for k in range(0, len(padded), 2):
-            word = padded[k] | padded[k + 1] << 8
-            self._sim(f"deposit {self.ring + k:o} {word:o}")
-        self._sim(f"deposit {self.rxhead:o} {len(data):o}")
+        for command in ring_commands(line, self.rxhead, self.rxtail, self.ring):
+            self._sim(command)
 
     def reply(self, line, timeout=None):
         """Give the FORTH one line; (ok, output, error message)."""

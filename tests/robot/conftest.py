@@ -16,10 +16,6 @@ HELPERS = (": .C ( -- ) 4 0 DO I Read.Counter . LOOP ;",
            ": HOLD ( -- ) 4 0 DO 0-Vel I 2* + @ VelOut I 2* + ! LOOP ;")
 
 
-def numbers(text):
-    return [int(w) for w in text.split()]
-
-
 @pytest.fixture
 def boot(tmp_path):
     """boot(trace=False) -> a Robot on a fresh copy of build/robot.dsk."""

@@ -1,5 +1,5 @@
 """Every word of blocks 1009-1012, exercised on the machine."""
-from conftest import numbers
+from harness.robot import numbers
 
 
 def test_array_and_velocity_words(robot):

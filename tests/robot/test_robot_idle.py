@@ -13,7 +13,7 @@ targets. t: Command.Status t stayed 1 in one run (0-Vel 2048, drifting 16
 counts/s) and was cleared in the other (0-Vel stepped 2045..2055, t swinging
 +-135 counts): with MaxVel 0 nothing but the adaptation acts on it.
 """
-from conftest import numbers
+from harness.robot import numbers
 
 TARGET = (1600, 800, 400)
 

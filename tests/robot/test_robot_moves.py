@@ -16,7 +16,7 @@ What the measurement showed, and why (blocks 1003-1007):
 """
 import csv
 
-from conftest import numbers
+from harness.robot import numbers
 
 RANGE = 5
 # (x, y, z) absolute targets in turn; t stays 0 (MaxVel 0). z moves upward

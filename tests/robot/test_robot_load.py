@@ -5,7 +5,7 @@ from pathlib import Path
 
 from harness.trace import read
 
-from conftest import numbers
+from harness.robot import numbers
 
 BLOCKS = Path(__file__).resolve().parents[2] / "blocks"
 DEFINING = re.compile(r"(?:^|\s)(?::|CODE|ARRAY|CON|VAR)\s+(\S+)")
