@@ -2,7 +2,7 @@
 (and of the proposed block 1030), made in lock-step with simulated time
 (harness/robot.py), so that the same command gives the same traces.
 
-    python -m harness.servo_runs OUTDIR [--block 1030]
+    python -m harness.servo_runs OUTDIR [--block 1030 [--then Ramp.Servo]]
 
 writes OUTDIR/moves.csv (a long and two short moves on x), OUTDIR/rest.csv (a
 move, then a simulated minute at rest) and prints what each line answered and
@@ -22,7 +22,7 @@ DISK = ROOT / "build" / "robot.dsk"
 MOVES = [(4000, 2.0), (4150, 2.0), (4190, 2.0)]
 
 
-def session(trace, block, disk_dir):
+def session(trace, block, then, disk_dir):
     disk = Path(disk_dir) / f"{trace.stem}.dsk"
     shutil.copy(DISK, disk)
     r = Robot(disk=disk, trace=trace, sample=1000)
@@ -30,6 +30,8 @@ def session(trace, block, disk_dir):
     if block:
         r.send(f"{block} LOAD")
     r.send("Set.Up.Robot")
+    if then:
+        r.send(then)
     return r
 
 
@@ -44,10 +46,11 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("outdir", type=Path)
     ap.add_argument("--block", type=int, help="a block to LOAD after 1000 (e.g. 1030)")
+    ap.add_argument("--then", default="", help="a line after Set.Up.Robot (e.g. Ramp.Servo)")
     a = ap.parse_args(argv)
     a.outdir.mkdir(parents=True, exist_ok=True)
     with tempfile.TemporaryDirectory() as tmp:
-        with session(a.outdir / "moves.csv", a.block, tmp) as r:
+        with session(a.outdir / "moves.csv", a.block, a.then, tmp) as r:
             report(r, "after Set.Up.Robot")
             for x, settle in MOVES:
                 start = r.time()
@@ -56,7 +59,7 @@ def main(argv=None):
                           f"{r.time() - start:.3f} s")
                 r.idle(settle)
                 report(r, f"  {settle} s later")
-        with session(a.outdir / "rest.csv", a.block, tmp) as r:
+        with session(a.outdir / "rest.csv", a.block, a.then, tmp) as r:
             r.send(": A. ( a -- ) 4 0 DO DUP I 2* + @ . LOOP DROP ;")
             r.send("1600 800 400 0 Abs.Move Move.Complete?")
             for k in range(7):
