@@ -2,21 +2,22 @@
 from harness.robot import numbers
 
 
+# (line, array printed after it, its four cells)
+SETTERS = [
+    ("Increment Zero.Array", "Increment", [0, 0, 0, 0]),
+    ("Set.Increments", "Increment", [3, 3, 3, 3]),
+    ("77 2 Max.Vel.Single", "MaxVel", [300, 300, 77, 0]),
+    ("10 20 30 40 Max.Vel", "MaxVel", [10, 20, 30, 40]),
+    ("Initialize.Zero.Velocities", "0-Vel", [2049, 2049, 2090, 2048]),
+    ("45 Delay ! Set.Delay", "Delay.Left", [45, 45, 45, 45]),
+]
+
+
 def test_array_and_velocity_words(robot):
     robot.send("0 177546O ! HOLD")  # servo off: it adapts 0-Vel, counts Delay.Left
-    robot.send("1 2 3 4 Desire.Pos 2DUP ! 2+ 2DUP ! 2+ 2DUP ! 2+ ! DROP")
-    robot.send("Increment Zero.Array")
-    assert numbers(robot.send("Increment A.")) == [0, 0, 0, 0]
-    robot.send("Set.Increments")
-    assert numbers(robot.send("Increment A.")) == [3, 3, 3, 3]
-    robot.send("77 2 Max.Vel.Single")
-    assert numbers(robot.send("MaxVel A.")) == [300, 300, 77, 0]
-    robot.send("10 20 30 40 Max.Vel")
-    assert numbers(robot.send("MaxVel A.")) == [10, 20, 30, 40]
-    robot.send("Initialize.Zero.Velocities")
-    assert numbers(robot.send("0-Vel A.")) == [2049, 2049, 2090, 2048]
-    robot.send("45 Delay ! Set.Delay")
-    assert numbers(robot.send("Delay.Left A.")) == [45, 45, 45, 45]
+    for line, array, cells in SETTERS:
+        robot.send(line)
+        assert numbers(robot.send(array + " A.")) == cells, line
 
 
 def test_move_words(robot):
