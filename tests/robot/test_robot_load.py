@@ -70,3 +70,15 @@ def test_load_error_keeps_the_prompt(boot):
     ok, out, err = r.reply("' Broken")
     assert not ok and "undefined word" in err
     assert r.send("2 3 + .") == "5 "
+
+
+def test_reload_while_the_servo_runs(robot):
+    """DESIGN.md section 4: FORGET never leaves vector 100 pointing into the
+    code it removes; the blocks load again and the servo comes back."""
+    out = robot.send("FORGET Desire.Pos")
+    assert "vector 000100 restored" in out
+    assert robot.examine(0o100) == 0o1100          # the kernel's stub (RTI)
+    robot.idle(1.0)                                # ticks keep coming: no trap
+    assert robot.send("1000 LOAD Set.Up.Robot UNUSED .") != ""
+    servo = numbers(robot.send("' Interrupt.Servo ."))[0] & 0xFFFF
+    assert robot.examine(0o100) == servo
