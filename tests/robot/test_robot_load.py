@@ -82,3 +82,16 @@ def test_reload_while_the_servo_runs(robot):
     assert robot.send("1000 LOAD Set.Up.Robot UNUSED .") != ""
     servo = numbers(robot.send("' Interrupt.Servo ."))[0] & 0xFFFF
     assert robot.examine(0o100) == servo
+
+
+def test_demo_block(boot):
+    """Block 1020 (the project's demonstration) loads after the appendix and
+    makes its three moves: four lines of counters, each near its target
+    (within the hunting: measured up to 35 counts off)."""
+    r = boot()
+    out = r.send("1000 LOAD 1020 LOAD")
+    lines = out.strip().split("\n")
+    assert lines[0].startswith("x y z t counters:") and len(lines) == 4, out
+    rows = [numbers(l.split(":")[-1]) for l in lines]
+    for row, target in zip(rows[1:], [(1600, 800, 400), (800, 800, 200), (0, 0, 0)]):
+        assert all(abs(c - g) <= 50 for c, g in zip(row, target)), (row, target)
