@@ -19,15 +19,10 @@ from pathlib import Path
 import pexpect
 
 ROOT = Path(__file__).resolve().parent.parent
-SIMULATOR = ROOT / os.environ.get("PDP11_SIM", "build/pdp11-stock")
+SIMULATOR = ROOT / os.environ.get("PDP11_SIM", "build/pdp11")
 KERNEL = ROOT / "build" / "kernel.lda"
 MACHINE_INI = ROOT / "pdp11-devices" / "machine.ini"
 RL02_BYTES = 10_485_760  # 512 cylinders x 2 heads x 40 sectors x 256 bytes
-
-# SIMH polls the console keyboard once per calibrated clock tick unless the
-# unit has its own wait: one character per 1/60 s would make a 1000-line
-# test take minutes. Poll every 2000 instructions instead.
-FAST_KEYBOARD = "deposit tti time 2000"
 
 OK = re.compile(r" ok\r\n")
 ERROR = re.compile(r"\r\nError: ([^\r\n]*)\r\n")
@@ -64,7 +59,6 @@ def blank_disk(path):
 def boot_script(disk, kernel=KERNEL, machine_ini=MACHINE_INI):
     """SIMH commands: the machine, the disk, the kernel, start."""
     return (f"do {machine_ini}\n"
-            f"{FAST_KEYBOARD}\n"
             f"attach rl0 {disk}\n"
             f"load {kernel}\n"
             "go\n")

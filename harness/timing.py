@@ -284,8 +284,10 @@ class _Output:
                 self.registers.append(int(line.split()[1]))
             else:
                 m = _STOP.match(line)
+                # stops before RATE and TICKS were read belong to the setup
+                # (breakpoints that bring the machine to where measuring starts)
                 if m and not m.group(1).strip().startswith("Step expired") \
-                        and self.stopped is None:
+                        and self.stopped is None and len(self.registers) >= 2:
                     # the chunk that stopped is still shown; later ones are not
                     self.stopped = f"{m.group(1).strip()} at PC {m.group(2)}"
                     self._last_block = self._blocks + 1

@@ -7,6 +7,6 @@ from harness.machine import KERNEL, SIMULATOR, Machine
 @pytest.fixture(scope="module")
 def forth():
     if not KERNEL.exists() or not SIMULATOR.exists():
-        pytest.fail(f"build first: {KERNEL} and {SIMULATOR} (make kernel build/pdp11-stock)")
+        pytest.fail(f"build first: {KERNEL} and {SIMULATOR} (make kernel build/pdp11)")
     with Machine() as m:
         yield m

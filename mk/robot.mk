@@ -1,0 +1,14 @@
+# mk/robot.mk: the appendix blocks on the emulated robot (issue 4).
+#   make bench-robot   Interrupt.Servo's KDF11-A cost per tick (idle, moving)
+#                      and 1000 LOAD's simulated and host time (part of make bench)
+#   make servo-runs    the traces behind docs/servo.md, in build/servo/ (printed
+#                      blocks, and with the proposed block 1030)
+bench-robot: $(BUILD)/kernel.lda $(BUILD)/pdp11 $(BUILD)/robot.dsk venv
+	@$(PY) -m harness.robot_bench
+
+servo-runs: $(BUILD)/kernel.lda $(BUILD)/pdp11 $(BUILD)/robot.dsk venv
+	@$(PY) -m harness.servo_runs $(BUILD)/servo/printed
+	@$(PY) -m harness.servo_runs $(BUILD)/servo/ramp --block 1030 --then Ramp.Servo
+
+BENCHES += bench-robot
+.PHONY: bench-robot servo-runs

@@ -1,0 +1,48 @@
+"""Fixtures for the robot tests: the appendix blocks loaded on build/pdp11,
+driven in lock-step with simulated time (harness/robot.py)."""
+import shutil
+
+import pytest
+
+from harness.machine import KERNEL, SIMULATOR
+from harness.robot import MAP, Robot
+
+DISK = KERNEL.parent / "robot.dsk"
+# Helpers typed at the prompt (not in the blocks): print the four counters,
+# the four cells of one of the appendix's arrays, and (with the servo's clock
+# interrupt off) put every DAC at its 0-Vel code so that the axes only creep.
+HELPERS = (": .C ( -- ) 4 0 DO I Read.Counter . LOOP ;",
+           ": A. ( array -- ) 4 0 DO DUP I 2* + @ . LOOP DROP ;",
+           ": HOLD ( -- ) 4 0 DO 0-Vel I 2* + @ VelOut I 2* + ! LOOP ;")
+
+
+@pytest.fixture
+def boot(tmp_path):
+    """boot(trace=False) -> a Robot on a fresh copy of build/robot.dsk."""
+    for need in (KERNEL, SIMULATOR, DISK, MAP):
+        if not need.exists():
+            pytest.fail(f"build first: {need} (make)")
+    robots = []
+
+    def start(trace=False):
+        disk = tmp_path / f"rl0-{len(robots)}.dsk"
+        shutil.copy(DISK, disk)
+        path = tmp_path / f"trace-{len(robots)}.csv" if trace else None
+        r = Robot(disk=disk, trace=path, timeout=20)  # a hung line fails fast
+        r.trace_path = path
+        robots.append(r)
+        return r
+
+    yield start
+    for r in robots:
+        r.close()
+
+
+@pytest.fixture
+def robot(boot):
+    """1000 LOAD, Set.Up.Robot and the helpers, with a plant trace."""
+    r = boot(trace=True)
+    assert r.send("1000 LOAD Set.Up.Robot") == ""
+    for h in HELPERS:
+        r.send(h)
+    return r
