@@ -5,14 +5,27 @@ S-LIMIT CONSTANT S-LIMIT  ( -- a )
 VARIABLE 'ON-ERROR  ( -- a ) \ xt run after every error (0 = none)
 : ?STACK  ( -- )
   SP@ S0 U> IF -4 THROW THEN  SP@ S-LIMIT 16 + U< IF -3 THROW THEN ;
+\ Control structures typed at the terminal (0 3 DO I . -1 +LOOP): an opening
+\ IF BEGIN DO ?DO in interpret state starts a temporary definition at HERE;
+\ when the structure closes it is run and HERE is put back.
+VARIABLE TEMP-DEPTH  ( -- a ) \ depth+1 when it started, 0 = none
+VARIABLE TEMP-START  ( -- a )
+: OPENER?  ( xt -- xt f )
+  DUP ['] IF = OVER ['] BEGIN = OR OVER ['] DO = OR OVER ['] ?DO = OR ;
+: TEMP-BEGIN  ( xt -- xt )  \ xt is still on the stack: DEPTH counts it (the +1)
+  HERE TEMP-START !  'DOCOL JSR-IP CF,  DEPTH TEMP-DEPTH !  ] ;
+: TEMP-END?  ( -- )  \ structure closed: run it, forget it
+  TEMP-DEPTH @ IF DEPTH 1+ TEMP-DEPTH @ = IF
+    ['] EXIT ,  POSTPONE [  0 TEMP-DEPTH !  TEMP-START @ DUP DP ! EXECUTE
+  THEN THEN ;
 : INTERPRET  ( -- )
   BEGIN PARSE-NAME DUP WHILE
     2DUP WHAT 2!  2DUP SEARCH-NAME ?DUP IF
       NIP NIP DUP NAME> SWAP C@
       STATE @ IF 128 AND IF EXECUTE ELSE , THEN
-      ELSE 64 AND IF -14 THROW THEN EXECUTE THEN
+      ELSE 64 AND IF OPENER? 0= IF -14 THROW THEN TEMP-BEGIN THEN EXECUTE THEN
     ELSE NUMBER? IF STATE @ IF POSTPONE LITERAL THEN ELSE -13 THROW THEN THEN
-    ?STACK
+    ?STACK TEMP-END?
   REPEAT 2DROP ;
 : EVALUATE  ( a u -- )
   SRC 2@ 2>R  >IN @ >R  BLK @ >R  SOURCE-ID @ >R
@@ -20,7 +33,6 @@ VARIABLE 'ON-ERROR  ( -- a ) \ xt run after every error (0 = none)
   R> SOURCE-ID !  R> BLK !  R> >IN !  2R> SRC 2! ;
 
 \ ---- reverse lookup: which word holds an address -----------------------------------
-: VOCS  ( -- a )  VOC-LINK ;  \ chain of vocabulary link cells (body+2)
 VARIABLE BEST  ( -- a )
 : WORD-AT  ( addr -- nfa | 0 )  \ the word whose code or body holds addr
   0 BEST !  VOC-LINK @ BEGIN ?DUP WHILE
@@ -73,7 +85,7 @@ VARIABLE BEST  ( -- a )
   BLK @ IF ."  in block " BLK @ . ." line " >IN @ 1- 0 MAX 64 / . THEN CR ;
 : DISCARD-DEFINITION  ( -- )  \ a definition cut short leaves nothing behind
   STATE @ IF COLON-LFA @ ?DUP IF DUP @ CURRENT @ ! DP !  CURRENT @ @ 2+ LAST ! THEN THEN
-  0 COLON-LFA ! ;
+  0 COLON-LFA !  TEMP-DEPTH @ IF TEMP-START @ DP !  0 TEMP-DEPTH ! THEN ;
 : RESET-AFTER-ERROR  ( -- )
   DISCARD-DEFINITION  POSTPONE [  0 BLK !  0 SOURCE-ID !  CURRENT @ CONTEXT !
   'ON-ERROR @ ?DUP IF EXECUTE THEN  S0 SP! ;

@@ -11,7 +11,8 @@ def still_works(forth):
 @pytest.mark.parametrize("line, message, word", [
     ("NO-SUCH-WORD", "undefined word", "NO-SUCH-WORD"),
     ("DROP", "stack underflow", "DROP"),
-    ("IF", "compile-only word interpreted", "IF"),
+    ("THEN", "compile-only word interpreted", "THEN"),
+    ("1 >R", "compile-only word interpreted", ">R"),
     (": BAD IF ;", "unbalanced control structure", ";"),
     (": BAD2 BEGIN THEN ;", "unbalanced control structure", "THEN"),
     ("1 @", "odd address for a word access", "@"),
@@ -47,6 +48,13 @@ def test_interrupted_definition_leaves_nothing(forth):
     assert not forth.reply(": HALF-DONE 1 2 NOWHERE").ok
     assert forth.send("HERE .") == before
     assert "undefined word" in forth.reply("HALF-DONE").error
+    still_works(forth)
+
+
+def test_typed_control_structure_cut_short(forth):
+    before = forth.send("HERE .")
+    assert forth.reply("3 0 DO I . NOWHERE").error == "undefined word: NOWHERE"
+    assert forth.send("HERE .") == before
     still_works(forth)
 
 

@@ -23,6 +23,12 @@ def test_numbers_octal_negative_base(forth):
 
 
 def test_plus_loop_counts_down_through_zero(forth):
+    assert forth.send("0 3 DO I . -1 +LOOP") == "3 2 1 0 "  # at the terminal too
+    before = forth.send("HERE .")
+    assert forth.send("1 IF 5 ELSE 6 THEN .") == "5 "
+    assert forth.send("3 BEGIN DUP . 1- DUP 0= UNTIL DROP") == "3 2 1 "
+    assert forth.send("2 0 DO 2 0 DO J I + . LOOP LOOP") == "0 1 1 2 "
+    assert forth.send("HERE .") == before
     forth.send(": DOWN 0 3 DO I . -1 +LOOP ;")
     assert forth.send("DOWN") == "3 2 1 0 "
     forth.send(": UP2 10 0 DO I . 3 +LOOP ;")
