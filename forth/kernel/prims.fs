@@ -195,9 +195,11 @@ CODE (FIND)  ( a u lfa -- nfa | 0 )
 
 \ console (DL11 at 177560): receive by interrupt into a 256-character ring;
 \ when the ring is full further characters are dropped and counted (RXLOST)
+\ ^C is not queued: it interrupts whatever runs (a runaway loop) with error -28
 LABEL RXINT
   RP -) R0 MOV,  RP -) T MOV,  RP -) W MOV,
   R0 177562O @# MOV,  R0 177600O # BIC,
+  3 # R0 CMP,  EQ IF,  0 # MTPS,  S S0 # MOV,  S -) CLR,  -28 THROW,  THEN,
   W RXHEAD @# MOV,  T W MOV,  T INC,  T RING-MASK INVERT # BIC,
   T RXTAIL @# CMP,
   EQ IF,  RXLOST @# INC,  ELSE,  RING W I) R0 MOVB,  RXHEAD @# T MOV,  THEN,

@@ -75,6 +75,7 @@ VARIABLE BEST  ( -- a )
   DUP -19 = IF DROP ." name longer than 31 characters" EXIT THEN
   DUP -22 = IF DROP ." unbalanced control structure" EXIT THEN
   DUP -23 = IF DROP ." odd address for a word access" EXIT THEN
+  DUP -28 = IF DROP ." interrupted by ^C" EXIT THEN
   DUP -33 = IF DROP ." block read error" EXIT THEN
   DUP -34 = IF DROP ." block write error" EXIT THEN
   DUP -35 = IF DROP ." no such block" EXIT THEN

@@ -63,3 +63,11 @@ def test_abort_quote_message(forth):
     r = forth.reply("-3 CHECK")
     assert r.error == "negative input: CHECK"
     still_works(forth)
+
+
+def test_control_c_stops_a_runaway_loop(forth):
+    forth.child.send("BEGIN AGAIN\r")
+    forth.child.expect("BEGIN AGAIN ")  # echoed: the loop is running
+    forth.child.sendcontrol("c")
+    forth.child.expect(r"\r\nError: interrupted by \^C: AGAIN\r\n")
+    still_works(forth)
