@@ -15,9 +15,8 @@ LABEL DODOES  ( -- a )  S -) W MOV,  RP ) RP )+ MOV,  NEXT,  END-CODE
 
 CODE EXIT  ( -- ) ( R: ip -- )  IP RP )+ MOV,  NEXT,  END-CODE  COMPILE-ONLY
 CODE (LIT)  ( -- x )  S -) IP )+ MOV,  NEXT,  END-CODE
-CODE BRANCH  ( -- )  IP IP ) MOV,  NEXT,  END-CODE
-CODE ?BRANCH  ( f -- )
-  S )+ TST,  EQ IF,  IP IP ) MOV,  NEXT,  THEN,  IP )+ TST,  NEXT,  END-CODE
+CODE BRANCH  ( -- )  BRANCH,  END-CODE
+CODE ?BRANCH  ( f -- )  S )+ TST,  EQ IF,  BRANCH,  THEN,  IP )+ TST,  NEXT,  END-CODE
 CODE EXECUTE  ( xt -- )  R0 S )+ MOV,  R0 ) JMP,  END-CODE
 
 \ DO loops. Return stack: leave address, bias = 100000-limit, index+bias.
@@ -30,10 +29,10 @@ CODE (?DO)  ( limit start -- )
   S ) 2 S I) CMP,  EQ IF,  S 4 # ADD,  IP IP ) MOV,  NEXT,  THEN,
   ' (DO) @# JMP,  END-CODE
 CODE (LOOP)  ( -- )
-  RP ) INC,  VS IF,  RP 6 # ADD,  IP )+ TST,  NEXT,  THEN,  IP IP ) MOV,  NEXT,
+  RP ) INC,  VS IF,  RP 6 # ADD,  IP )+ TST,  NEXT,  THEN,  BRANCH,
   END-CODE
 CODE (+LOOP)  ( n -- )
-  RP ) S )+ ADD,  VS IF,  RP 6 # ADD,  IP )+ TST,  NEXT,  THEN,  IP IP ) MOV,  NEXT,
+  RP ) S )+ ADD,  VS IF,  RP 6 # ADD,  IP )+ TST,  NEXT,  THEN,  BRANCH,
   END-CODE
 CODE I  ( -- n )  R0 RP ) MOV,  R0 2 RP I) SUB,  S -) R0 MOV,  NEXT,  END-CODE  COMPILE-ONLY
 CODE J  ( -- n )  R0 6 RP I) MOV,  R0 10O RP I) SUB,  S -) R0 MOV,  NEXT,  END-CODE  COMPILE-ONLY

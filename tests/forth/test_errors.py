@@ -43,6 +43,13 @@ def test_stack_overflow(forth):
     still_works(forth)
 
 
+def test_runaway_push_loop(forth):
+    assert forth.reply("BEGIN 1 AGAIN").error == "stack overflow: AGAIN"
+    still_works(forth)
+    assert forth.reply(": PUSHES 30000 0 DO I LOOP ; PUSHES").error == "stack overflow: PUSHES"
+    still_works(forth)
+
+
 def test_interrupted_definition_leaves_nothing(forth):
     before = forth.send("HERE .")
     assert not forth.reply(": HALF-DONE 1 2 NOWHERE").ok
