@@ -23,3 +23,10 @@ export-blocks:
 
 ALL_PRODUCTS += $(BUILD)/robot.dsk $(ROBOT_DISK)
 .PHONY: export-blocks
+
+# instructions spent by the driver and the buffers (make bench)
+bench-disk: all venv
+	@$(PY) -m harness.disk_bench
+
+BENCHES += bench-disk
+.PHONY: bench-disk
