@@ -223,3 +223,11 @@ def test_a_controller_that_never_finishes_is_an_error_not_a_hang(tmp_path):
         assert not r.ok and r.error.startswith("block read error")
         assert "RL0 block 10239 read timed out: CSR=" in r.output
         assert m.send("1 2 + .").split() == ["3"]
+
+
+def test_a_block_that_loads_itself_ends_in_an_error(image, boot):
+    put_block(image, 80, ["( runaway ) 80 LOAD"])
+    m = boot()
+    r = m.reply("80 LOAD")
+    assert not r.ok and "overflow" in r.error and "in block 80 line 0" in r.error
+    assert m.send("BLK @ . 1 2 + .").split() == ["0", "3"]
