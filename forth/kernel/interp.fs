@@ -39,6 +39,7 @@
 \ A vocabulary's body: +0 newest LFA of its chain, +2 VOC-LINK cell.
 \ Search: CONTEXT, then FORTH.
 : SEARCH-NAME  ( a u -- nfa | 0 )
+  CONTEXT @ FORTH-BODY = IF FORTH-BODY @ (FIND) EXIT THEN  \ one pass will do
   2DUP CONTEXT @ @ (FIND) ?DUP IF NIP NIP EXIT THEN
   FORTH-BODY @ (FIND) ;
 : FIND  ( ca -- ca 0 | xt 1 | xt -1 )
