@@ -48,6 +48,13 @@ VARIABLE BEST  ( -- a )
 : .OCTAL  ( u -- )  BASE @ >R 8 BASE ! 0 <# # # # # # # #> TYPE R> BASE ! ;
 
 \ ---- error reports -------------------------------------------------------------
+: DISARM  ( -- )  \ an interrupt handler that trapped leaves its vector
+  TRAP-PC @ WORD-AT ?DUP 0= IF EXIT THEN
+  1000O 0 DO
+    I @ WORD-AT OVER = IF
+      STUBS I + I !  ." ; vector " I .OCTAL ."  restored to its default handler"
+    THEN
+  4 +LOOP DROP ;
 : .TRAP  ( -- )  \ what the last unexpected trap was, and where
   TRAP-VEC @ DUP 4 = IF ." bus error or odd address" ELSE
     DUP 10O = IF ." illegal or reserved instruction" ELSE
@@ -58,7 +65,7 @@ VARIABLE BEST  ( -- a )
     DUP 24O = IF ." power fail" ELSE
     ." unexpected interrupt" THEN THEN THEN THEN THEN THEN THEN
   ."  (vector " .OCTAL ." , PC " TRAP-PC @ DUP .OCTAL
-  WORD-AT ?DUP IF ."  in " .NAME THEN ." )" ;
+  WORD-AT ?DUP IF ."  in " .NAME THEN  DISARM ." )" ;
 : .ERROR-TEXT  ( code -- )
   DUP -1 = IF DROP ." aborted" EXIT THEN
   DUP -2 = IF DROP ABORT-MSG @ COUNT TYPE EXIT THEN
@@ -89,7 +96,7 @@ VARIABLE BEST  ( -- a )
   0 COLON-LFA !  TEMP-DEPTH @ IF TEMP-START @ DP !  0 TEMP-DEPTH ! THEN ;
 : RESET-AFTER-ERROR  ( -- )
   DISCARD-DEFINITION  POSTPONE [  0 BLK !  0 SOURCE-ID !  CURRENT @ CONTEXT !
-  'ON-ERROR @ ?DUP IF EXECUTE THEN  S0 SP! ;
+  'ON-ERROR @ ?DUP IF EXECUTE THEN  S0 SP!  0 PRIORITY! ;
 
 \ ---- QUIT --------------------------------------------------------------------------
 : .LOST  ( -- )  \ say so when the console ring overflowed
@@ -98,7 +105,7 @@ VARIABLE BEST  ( -- a )
   TIB TIB-SIZE 1- ACCEPT  TIB SWAP SRC 2!  0 >IN !  0 BLK !  0 SOURCE-ID !  SPACE .LOST ;
 : INTERPRET-LINE  ( -- )  QUERY INTERPRET ;
 : QUIT  ( -- )  \ read, interpret, report: forever
-  RP0 RP!  0 HANDLER !  POSTPONE [  0 BLK !
+  RP0 RP!  0 HANDLER !  POSTPONE [  0 BLK !  0 PRIORITY!
   BEGIN
     ['] INTERPRET-LINE CATCH ?DUP IF .ERROR RESET-AFTER-ERROR ELSE ."  ok" CR THEN
   AGAIN ;

@@ -78,3 +78,16 @@ def test_control_c_stops_a_runaway_loop(forth):
     forth.child.sendcontrol("c")
     forth.child.expect(r"\r\nError: interrupted by \^C: AGAIN\r\n")
     still_works(forth)
+
+
+def test_trapping_interrupt_handler_is_taken_out(forth):
+    """A clock handler that traps (bus error) is reported once, and its vector
+    goes back to the default handler instead of trapping at every tick."""
+    from harness.machine import ERROR
+    forth.send("CODE BADINT 160000O @# TST, RTI, END-CODE")
+    forth.child.send("' BADINT 100O !\r")  # the stock clock ticks at once
+    forth.child.expect(ERROR)
+    assert "in BADINT; vector 000100 restored to its default handler" in \
+        forth.child.match.group(1)
+    assert forth.send("100O @ 1100O = .").endswith("-1 ")
+    still_works(forth)
