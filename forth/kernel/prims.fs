@@ -113,8 +113,16 @@ CODE SM/REM  ( d n -- rem quot )  \ symmetric: DIV's own rounding
   S ) TST,  EQ IF,  -10 THROW,  THEN,
   R0 2 S I) MOV,  T 4 S I) MOV,  R0 S )+ DIV,  2 S I) T MOV,  S ) R0 MOV,  NEXT,
   END-CODE
-CODE UM/MOD  ( ud u -- rem quot )  \ unsigned: 16 shift-and-subtract steps
+CODE UM/MOD  ( ud u -- rem quot )
   S ) TST,  EQ IF,  -10 THROW,  THEN,
+  \ EIS DIV is signed: usable when divisor and high word are below 100000 and
+  \ the quotient fits (no V); otherwise 16 shift-and-subtract steps
+  S ) TST,  PL IF,
+    2 S I) TST,  PL IF,
+      R0 2 S I) MOV,  T 4 S I) MOV,  R0 S ) DIV,
+      VC IF,  S 2 # ADD,  S ) R0 MOV,  2 S I) T MOV,  NEXT,  THEN,
+    THEN,
+  THEN,
   W S )+ MOV,  R0 S )+ MOV,  T S ) MOV,  R3 16 # MOV,
   BEGIN,
     T ASL,  R0 ROL,
