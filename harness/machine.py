@@ -18,12 +18,11 @@ from pathlib import Path
 
 import pexpect
 
-from harness.blocks import RL02_BYTES
-
 ROOT = Path(__file__).resolve().parent.parent
 SIMULATOR = ROOT / os.environ.get("PDP11_SIM", "build/pdp11-stock")
 KERNEL = ROOT / "build" / "kernel.lda"
 MACHINE_INI = ROOT / "pdp11-devices" / "machine.ini"
+RL02_BYTES = 10_485_760  # 512 cylinders x 2 heads x 40 sectors x 256 bytes
 
 # SIMH polls the console keyboard once per calibrated clock tick unless the
 # unit has its own wait: one character per 1/60 s would make a 1000-line
