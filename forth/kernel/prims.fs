@@ -201,7 +201,7 @@ CODE (FIND)  ( a u lfa -- nfa | 0 )
   THEN,
   IP RP )+ MOV,  S 2 # ADD,  S ) CLR,  NEXT,  END-CODE
 
-\ console (DL11 at 177560): receive by interrupt into a 256-character ring;
+\ console (DL11 at 177560): receive by interrupt into a ring of 511 characters;
 \ when the ring is full further characters are dropped and counted (RXLOST)
 \ ^C is not queued: it interrupts whatever runs (a runaway loop) with error -28
 LABEL RXINT

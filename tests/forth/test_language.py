@@ -175,10 +175,10 @@ CODE Tick Save-Regs TICKS @# INC, Restore-Regs RTI,
 
 
 def test_ring_overflow_is_reported(forth):
-    """More than 256 characters typed while a word runs: the excess is dropped
+    """More than 511 characters typed while a word runs: the excess is dropped
     and the loss is reported at the next line."""
-    forth.send(": BUSY2 10 0 DO 30000 0 DO LOOP LOOP ;")
-    forth.child.send("BUSY2\r" + ("1 DROP " * 11 + "\r") * 5)
+    forth.send(": BUSY2 20 0 DO 30000 0 DO LOOP LOOP ;")
+    forth.child.send("BUSY2\r" + ("1 DROP " * 11 + "\r") * 9)
     forth.child.expect("characters lost: typed too far ahead")
     forth.child.send("\r")  # ends whatever line the ring cut short
     forth.child.send(".( in step)\r")
