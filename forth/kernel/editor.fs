@@ -1,5 +1,6 @@
 \ editor.fs: the line editor, vocabulary EDITOR (FORTH-79 style: typing
 \ EDITOR makes it the context vocabulary; it chains to FORTH).
+\ Commands: L T P C INS D E S WIPE COPY N B (stack comments below).
 \ Every command works on block SCR (set by LIST, N, B, WIPE, COPY); lines
 \ are 0..15, 64 characters each. Commands that change the block UPDATE it;
 \ FLUSH (or SAVE-BUFFERS) writes it to disk. See forth/EDITOR.md.
