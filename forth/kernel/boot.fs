@@ -11,8 +11,9 @@
 
 \ unexpected traps and interrupts: vector v holds STUBS+v, whose stub is
 \ JSR R0,@#TRAPPED; the vector is recovered from R0, the trap frame dropped,
-\ and the interpreter's error path entered with -256 THROW, still at priority 7
-\ (a handler that trapped cannot run again before DISARM takes it out).
+\ and the interpreter's error path entered with -256 THROW, still at priority 7:
+\ THROW first takes a handler that trapped out of its vector (DISARM), then
+\ lowers the priority.
 LABEL TRAPPED
   R0 STUBS 4 + # SUB,  TRAP-VEC @# R0 MOV,
   RP )+ TST,  TRAP-PC @# RP )+ MOV,  RP )+ TST,

@@ -48,13 +48,15 @@ VARIABLE BEST  ( -- a )
 : .OCTAL  ( u -- )  BASE @ >R 8 BASE ! 0 <# # # # # # # #> TYPE R> BASE ! ;
 
 \ ---- error reports -------------------------------------------------------------
+VARIABLE DISARMED  ( -- a ) \ vector DISARM put back, -1 = none
 : DISARM  ( -- )  \ an interrupt handler that trapped leaves its vector
-  TRAP-PC @ WORD-AT ?DUP 0= IF EXIT THEN
+  -1 DISARMED !  TRAP-PC @ WORD-AT ?DUP 0= IF EXIT THEN
   1000O 0 DO
-    I @ WORD-AT OVER = IF
-      STUBS I + I !  ." ; vector " I .OCTAL ."  restored to its default handler"
-    THEN
+    I @ WORD-AT OVER = IF STUBS I + I !  I DISARMED ! THEN
   4 +LOOP DROP ;
+: .DISARMED  ( -- )
+  DISARMED @ DUP 0< IF DROP EXIT THEN
+  ." ; vector " .OCTAL ."  restored to its default handler"  -1 DISARMED ! ;
 : .TRAP  ( -- )  \ what the last unexpected trap was, and where
   TRAP-VEC @ DUP 4 = IF ." bus error or odd address" ELSE
     DUP 10O = IF ." illegal or reserved instruction" ELSE
@@ -65,7 +67,7 @@ VARIABLE BEST  ( -- a )
     DUP 24O = IF ." power fail" ELSE
     ." unexpected interrupt" THEN THEN THEN THEN THEN THEN THEN
   ."  (vector " .OCTAL ." , PC " TRAP-PC @ DUP .OCTAL
-  WORD-AT ?DUP IF ."  in " .NAME THEN  DISARM ." )" ;
+  WORD-AT ?DUP IF ."  in " .NAME THEN  .DISARMED ." )" ;
 : .ERROR-TEXT  ( code -- )
   DUP -1 = IF DROP ." aborted" EXIT THEN
   DUP -2 = IF DROP ABORT-MSG @ COUNT TYPE EXIT THEN

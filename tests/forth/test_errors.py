@@ -85,9 +85,18 @@ def test_trapping_interrupt_handler_is_taken_out(forth):
     goes back to the default handler instead of trapping at every tick."""
     from harness.machine import ERROR
     forth.send("CODE BADINT 160000O @# TST, RTI, END-CODE")
-    forth.child.send("' BADINT 100O !\r")  # the stock clock ticks at once
+    forth.send(": LKS-ON 100O 177546O ! ;  : CLOCK-ON ['] LKS-ON CATCH DROP ;")
+    forth.send("CLOCK-ON")  # the stock clock is always on
+    forth.child.send("' BADINT 100O !\r")
     forth.child.expect(ERROR)
     assert "in BADINT; vector 000100 restored to its default handler" in \
         forth.child.match.group(1)
     assert forth.send("100O @ 1100O = .").endswith("-1 ")
+    still_works(forth)
+
+
+def test_caught_trap_leaves_interrupts_on(forth):
+    """A trap caught by CATCH (probing a register that may not exist) still
+    lowers the priority: the console keeps working."""
+    assert forth.send("' 160000O CATCH . 177776O @ 340O AND .".replace("' 160000O", ": PROBE 160000O @ ; ' PROBE")) == "-256 0 "
     still_works(forth)

@@ -159,14 +159,18 @@ def test_harness_reports_a_halt():
 
 def test_interrupt_handler_in_code_then_forget(forth):
     """The appendix's pattern: register-saving macros as colon definitions that
-    assemble, a CODE word ending in RTI installed with ' into the clock vector
-    (the stock 11/23 clock always interrupts at 60 Hz), FORGET restores it."""
+    assemble, a CODE word ending in RTI installed with ' into the clock vector,
+    FORGET restores it. The clock is enabled through LKS where it exists (the
+    project's KW11-L); the stock 11/23 has no LKS (the bus error is CAUGHT) and
+    always interrupts."""
     forth.send_lines("""MARKER CLOCK-TEST
 : Save-Regs ASSEMBLER RP -) R0 MOV, RP -) T MOV, RP -) W MOV, FORTH ;
 : Restore-Regs ASSEMBLER W RP )+ MOV, T RP )+ MOV, R0 RP )+ MOV, FORTH ;
 VARIABLE TICKS
 CODE Tick Save-Regs TICKS @# INC, Restore-Regs RTI,
-: Install ' Tick 100O ! ;
+: LKS-ON 100O 177546O ! ;
+: CLOCK-ON ['] LKS-ON CATCH DROP ;
+: Install ' Tick 100O ! CLOCK-ON ;
 : WAIT-TICKS ( n -- ) TICKS @ + BEGIN DUP TICKS @ - 0< UNTIL DROP ;""")
     forth.send("Install 3 WAIT-TICKS")
     assert int(forth.send("TICKS @ .")) >= 3
