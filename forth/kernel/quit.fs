@@ -34,14 +34,16 @@ VARIABLE TEMP-START  ( -- a )
 
 \ ---- reverse lookup: which word holds an address -----------------------------------
 VARIABLE BEST  ( -- a )
+: BEST-IN  ( addr lfa -- addr )  \ one chain: keep the best header in BEST
+  BEGIN ?DUP WHILE
+    DUP 2+ NAME> 2 PICK SWAP U< 0= IF
+      DUP 2+ NAME> BEST @ ?DUP IF NAME> U> ELSE DROP TRUE THEN
+      IF DUP 2+ BEST ! THEN
+    THEN @
+  REPEAT ;
 : WORD-AT  ( addr -- nfa | 0 )  \ the word whose code or body holds addr
   0 BEST !  VOC-LINK @ BEGIN ?DUP WHILE
-    DUP 2- @ BEGIN ?DUP WHILE
-      DUP 2+ NAME> 3 PICK SWAP U< 0= IF
-        DUP 2+ NAME> BEST @ ?DUP IF NAME> U> ELSE DROP TRUE THEN
-        IF DUP 2+ BEST ! THEN
-      THEN @
-    REPEAT @
+    4 0 DO DUP 8 - I 2* + @ ROT SWAP BEST-IN SWAP LOOP @
   REPEAT DROP BEST @ ;
 : >NAME  ( xt -- nfa | 0 )  DUP WORD-AT DUP IF TUCK NAME> <> IF DROP 0 THEN ELSE NIP THEN ;
 : .NAME  ( nfa -- )  COUNT 31 AND TYPE ;
@@ -93,8 +95,10 @@ VARIABLE DISARMED  ( -- a ) \ vector DISARM put back, -1 = none
 : .ERROR  ( code -- )  \ Error: what: word [in block b line l]
   CR ." Error: " .ERROR-TEXT  ." : " WHAT 2@ TYPE
   BLK @ IF ."  in block " BLK @ . ." line " >IN @ 1- 0 MAX 64 / . THEN CR ;
+: UNLINK  ( lfa -- )  \ the newest header of CURRENT leaves, HERE goes back to it
+  DUP @ OVER 2+ C@ CURRENT @ SWAP CHAIN !  DP !  CURRENT @ NEWEST 2+ LAST ! ;
 : DISCARD-DEFINITION  ( -- )  \ a definition cut short leaves nothing behind
-  STATE @ IF COLON-LFA @ ?DUP IF DUP @ CURRENT @ ! DP !  CURRENT @ @ 2+ LAST ! THEN THEN
+  STATE @ IF COLON-LFA @ ?DUP IF UNLINK THEN THEN
   0 COLON-LFA !  TEMP-DEPTH @ IF TEMP-START @ DP !  0 TEMP-DEPTH ! THEN ;
 : RESET-AFTER-ERROR  ( -- )
   DISCARD-DEFINITION  POSTPONE [  0 BLK !  0 SOURCE-ID !  CURRENT @ CONTEXT !
