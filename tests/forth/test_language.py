@@ -82,9 +82,11 @@ def test_forget_and_marker_restore_vectors(forth):
     assert "vector 000300 restored to its default handler" in out
     assert forth.send("300O @ 1300O = .") == "-1 "
     assert "undefined word" in forth.reply("MY-HANDLER").error
-    forth.send(": TEMP1 1 ; : TEMP2 2 ;")
+    forth.send(": TEMP1 1 ; : TMP2 2 ; : TEMPO3 3 ; : T4 4 ;")  # all four chains
+    assert forth.send("WORDS").startswith("T4 TEMPO3 TMP2 TEMP1 ")
     forth.send("FORGET TEMP1")
-    assert "undefined word" in forth.reply("TEMP2").error
+    for name in ("TEMP1", "TMP2", "TEMPO3", "T4"):
+        assert "undefined word" in forth.reply(name).error
     assert "cannot forget kernel words" in forth.reply("FORGET DUP").error
 
 
