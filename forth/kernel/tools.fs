@@ -27,10 +27,10 @@ CREATE CURSORS 8 ALLOT  ( -- a ) \ WORDS' place in each chain
   OVER ['] (LOOP) = OR SWAP ['] (+LOOP) = OR ;
 : SEE-COLON  ( body -- )
   DUP BEGIN  ( far a )
-    DUP @ DUP .XT  ( far a xt )
-    DUP ['] (LIT) = IF DROP 2+ DUP @ . ELSE
+    DUP @  ( far a xt )
+    DUP ['] (LIT) = IF DROP 2+ DUP @ . ELSE  DUP .XT
     DUP INLINE-STRING? IF DROP 2+ DUP COUNT TYPE [CHAR] " EMIT SPACE DUP C@ + 1- ALIGNED
-    ELSE DUP BRANCHING? IF DROP 2+ DUP @ DUP ." ->" .OCTAL SPACE ROT MAX SWAP
+    ELSE DUP BRANCHING? IF DROP 2+ DUP @ DUP ." ->" .OCTAL SPACE ROT UMAX SWAP
     ELSE ['] EXIT = IF 2DUP SWAP U< 0= IF 2DROP EXIT THEN THEN THEN THEN THEN
     2+
   AGAIN ;
