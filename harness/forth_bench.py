@@ -17,12 +17,18 @@ from harness.machine import OK, ROOT, SIMULATOR, Machine
 
 RATE = 300_000
 
-SETUP = r"""
+# the counting words: breakpoints go on MARK and END-MARK; QUIET/LOUD hold the
+# clock's interrupts off; B-EMPTY measures the pair itself
+MARK_WORDS = r"""
 CODE MARK NEXT, END-CODE
 CODE END-MARK NEXT, END-CODE
-CODE NOP NEXT, END-CODE
 CODE QUIET 300O # MTPS, NEXT, END-CODE
 CODE LOUD 0 # MTPS, NEXT, END-CODE
+: B-EMPTY QUIET MARK END-MARK LOUD ;
+"""
+
+SETUP = r"""
+CODE NOP NEXT, END-CODE
 : NOOP ;
 : INNER END-MARK ;
 : INNER-EXIT MARK ;
@@ -34,7 +40,6 @@ CREATE FLAGS SIZE ALLOT
 : SIEVE ( -- n ) 0 10 0 DO DROP PRIMES LOOP ;
 : EMPTY-LOOP 10000 0 DO LOOP ;
 : FIB ( n -- fib ) DUP 2 < IF EXIT THEN 1- DUP RECURSE SWAP 1- RECURSE + ;
-: B-EMPTY QUIET MARK END-MARK LOUD ;
 : B-NEXT QUIET MARK NOP END-MARK LOUD ;
 : B-DOCOL QUIET MARK INNER LOUD ;
 : B-EXIT QUIET INNER-EXIT END-MARK LOUD ;
@@ -42,6 +47,9 @@ CREATE FLAGS SIZE ALLOT
 : B-SIEVE QUIET MARK SIEVE END-MARK LOUD ;
 : B-LOOP QUIET MARK EMPTY-LOOP END-MARK LOUD ;
 : B-FIB QUIET MARK 20 FIB END-MARK LOUD ;
+CREATE TEXT 448 ALLOT
+: TEXT! ( -- ) 64 0 DO S" 1 DROP " TEXT I 7 * + SWAP MOVE LOOP ;
+: B-INTERPRET QUIET TEXT! MARK TEXT 448 EVALUATE END-MARK LOUD ;
 """
 
 TIME = re.compile(r"Time:\s+(\d+)")
@@ -70,26 +78,32 @@ def count(m, word):
     return times[1] - times[0]
 
 
+def start_counting(m, setup):
+    """Define the counting words and `setup` (FORTH lines), put the breakpoints
+    (with actions) on MARK and END-MARK, resume; the cost of an empty pair."""
+    for line in (MARK_WORDS + setup).strip().splitlines():
+        m.send(line)
+    m.send("OCTAL")
+    marks = [m.send(f"' {w} U.").split()[0] for w in ("MARK", "END-MARK")]
+    m.send("DECIMAL")
+    m.child.sendcontrol("e")  # to the sim> prompt
+    m.child.expect("sim> ")
+    for mark in marks:  # two words: SIMH does not stop twice in a row at one PC
+        m.child.sendline(f"break {mark};show time;cont")
+        m.child.expect("sim> ")
+    resume(m)
+    return count(m, "B-EMPTY")
+
+
 def main():
     with Machine(timeout=120) as m:
-        for line in SETUP.strip().splitlines():
-            m.send(line)
-        m.send("OCTAL")
-        marks = [m.send(f"' {w} U.").split()[0] for w in ("MARK", "END-MARK")]
-        m.send("DECIMAL")
-        # set the breakpoint at the sim> prompt (^E), with actions
-        m.child.sendcontrol("e")
-        m.child.expect("sim> ")
-        for mark in marks:  # two words: SIMH does not stop twice in a row at one PC
-            m.child.sendline(f"break {mark};show time;cont")
-            m.child.expect("sim> ")
-        resume(m)
-        empty = count(m, "B-EMPTY")
+        empty = start_counting(m, SETUP)
         rows = []
         for name, word in [
             ("BYTE Sieve, 10 iterations of 8190 flags", "B-SIEVE"),
             ("10 000 empty DO LOOP passes", "B-LOOP"),
             ("recursive Fibonacci of 20", "B-FIB"),
+            ("outer interpreter: EVALUATE of 64 x '1 DROP'", "B-INTERPRET"),
         ]:
             n = count(m, word)
             rows.append((name, n - empty))
@@ -110,6 +124,8 @@ def main():
     for name, n in rows:
         print(f"{name:45s} {n:14d} {n / RATE:9.3f}")
     print(f"  (sieve found {primes} primes per iteration; fib(20) = {fib})")
+    print(f"  (the interpreter: {rows[3][1] // 128} instructions per word, "
+          "number or name, including the dictionary search)")
     print(f"instructions per NEXT {nxt}, DOCOL {docol}, EXIT {exit_}, "
           f"call of an empty colon word {call}")
     print("anchors: polyFORTH Sieve 75 s on an 11/03, 12.5 s on an 11/60; "

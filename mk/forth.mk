@@ -9,7 +9,8 @@ PDP11_SIM  ?= $(BUILD)/pdp11
 ROBOT_DISK ?= local/robot.dsk
 export PDP11_SIM
 
-FORTH_SRC := $(wildcard forth/meta/*.fs forth/kernel/*.fs) forth/asm.fs forth/asm-host.fs
+FORTH_SRC := $(wildcard forth/meta/*.fs forth/kernel/*.fs) forth/asm.fs forth/asm-host.fs \
+             forth/asm-target.fs
 
 $(BUILD)/kernel.lda: $(FORTH_SRC)
 	@bash mk/apt-need.sh gforth

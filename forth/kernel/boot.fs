@@ -11,11 +11,13 @@
 
 \ unexpected traps and interrupts: vector v holds STUBS+v, whose stub is
 \ JSR R0,@#TRAPPED; the vector is recovered from R0, the trap frame dropped,
-\ priority 0, and the interpreter's error path entered with -256 THROW.
+\ and the interpreter's error path entered with -256 THROW, still at priority 7:
+\ THROW first takes a handler that trapped out of its vector (DISARM), then
+\ lowers the priority.
 LABEL TRAPPED
   R0 STUBS 4 + # SUB,  TRAP-VEC @# R0 MOV,
   RP )+ TST,  TRAP-PC @# RP )+ MOV,  RP )+ TST,
-  0 # MTPS,  S S0 # MOV,  S -) -256 # MOV,
+  S S0 # MOV,  S -) -256 # MOV,  \ priority stays 7 until the report is out
   IP HERE 6 + # MOV,  NEXT,  ' THROW ,  END-CODE
 LABEL TICK  ( line clock, vector 100: nothing to do until a servo is installed )
   RTI,  END-CODE

@@ -66,7 +66,9 @@ VARIABLE WARNING  ( -- a )
 : CATCH  ( xt -- 0 | code )
   SP@ >R  HANDLER @ >R  RP@ HANDLER !  EXECUTE  R> HANDLER !  R> DROP  0 ;
 : THROW  ( code -- )
-  ?DUP IF HANDLER @ 0= IF .ERROR WARM THEN  \ no CATCH: report, restart QUIT
+  ?DUP IF
+    DUP -256 = IF DISARM 0 PRIORITY! THEN  \ a trap arrives at priority 7
+    HANDLER @ 0= IF .ERROR WARM THEN  \ no CATCH: report, restart QUIT
     HANDLER @ RP!  R> HANDLER !  R> SWAP >R SP! DROP R> THEN ;
 VARIABLE ABORT-MSG  ( -- a ) \ counted message of the last ABORT"
 : ABORT  ( -- )  -1 THROW ;

@@ -136,6 +136,11 @@ CREATE CUR-BLK  ( -- a ) -1 ,   \ the block UPDATE marks, -1 = none
 : ;S ( -- ) \ interpreting: stop loading this block; compiling: EXIT (fig)
    STATE @ IF POSTPONE EXIT ELSE SOURCE NIP >IN ! THEN ; IMMEDIATE
 
+: .DISK ( -- ) \ the disk and the state of its drive, for the banner
+   ." Disk: RL02 on the RLV12 at 174400, blocks 0-" #BLOCKS 1- 0 U.R
+   3 RL-STATUS DUP 7 AND 5 <> IF ." , drive not ready (no disk attached?)" THEN
+   20000O AND IF ." , write-locked" THEN ." ." ;
+
 \ ---- listing -------------------------------------------------------------
 VARIABLE SCR  ( -- a ) \ the block last listed (the editor's block)
 : -BLANKS ( addr len -- addr len' ) \ drop trailing blanks and control chars

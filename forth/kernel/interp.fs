@@ -36,11 +36,21 @@
   NIP ?NEGATE NIP NIP TRUE ;
 
 \ ---- finding words -----------------------------------------------------------------
-\ A vocabulary's body: +0 newest LFA of its chain, +2 VOC-LINK cell.
-\ Search: CONTEXT, then FORTH.
+\ A vocabulary's body: +0 +2 +4 +6 the newest LFA of each of its four chains
+\ (names of length 0, 1, 2, 3 mod 4), +10 its VOC-LINK cell.
+\ Search: CONTEXT, then FORTH, each in the chain of the name's length.
+: CHAIN  ( voc u -- a )  3 AND 2* + ;
 : SEARCH-NAME  ( a u -- nfa | 0 )
-  2DUP CONTEXT @ @ (FIND) ?DUP IF NIP NIP EXIT THEN
-  FORTH-BODY @ (FIND) ;
+  CONTEXT @ FORTH-BODY <> IF
+    2DUP CONTEXT @ OVER CHAIN @ (FIND) ?DUP IF NIP NIP EXIT THEN
+  THEN  FORTH-BODY OVER CHAIN @ (FIND) ;
+: UMAX  ( u1 u2 -- u )  2DUP U< IF SWAP THEN DROP ;
+: NEWEST-SLOT  ( heads -- slot | 0 )  \ the cell holding the newest header
+  0 SWAP 4 0 DO
+    DUP @ IF OVER 0= IF NIP DUP ELSE OVER @ OVER @ U< IF NIP DUP THEN THEN THEN
+    2+
+  LOOP DROP ;
+: NEWEST  ( voc -- lfa | 0 )  NEWEST-SLOT DUP IF @ THEN ;
 : FIND  ( ca -- ca 0 | xt 1 | xt -1 )
   DUP COUNT SEARCH-NAME ?DUP IF NIP DUP NAME> SWAP C@ 128 AND IF 1 ELSE -1 THEN THEN ;
 : TICK  ( "name" -- xt )  PARSE-NAME SEARCH-NAME ?DUP 0= IF -13 THROW THEN NAME> ;
@@ -96,7 +106,7 @@ VARIABLE SBUF  ( -- a ) \ offset of the buffer used last
 VARIABLE COLON-LFA  ( -- a ) \ header of the definition being compiled
 : HEADER,  ( a u -- )  \ link into CURRENT, name as written
   DUP 0= IF -16 THROW THEN  DUP 31 > IF -19 THROW THEN
-  ALIGN HERE CURRENT @ @ ,  CURRENT @ !  HERE LAST !
+  ALIGN HERE  CURRENT @ 2 PICK CHAIN  DUP @ ,  !  HERE LAST !
   DUP C, HERE OVER ALLOT SWAP CMOVE ALIGN ;
 : CF,  ( handler opcode -- )  , , ;  \ code field JSR reg,@#handler
 4437O CONSTANT JSR-IP  ( -- op )
@@ -128,7 +138,7 @@ DODOES CONSTANT 'DODOES  ( -- a )
   ['] EXIT ,  4 ?PAIRS  COLON-LFA @ IF REVEAL THEN  0 COLON-LFA !  POSTPONE [ ;
   IMMEDIATE COMPILE-ONLY
 : VOCABULARY  ( "name" -- )
-  CREATE 0 , HERE VOC-LINK @ , VOC-LINK !  IMMEDIATE  DOES> CONTEXT ! ;
+  CREATE 0 , 0 , 0 , 0 ,  HERE VOC-LINK @ , VOC-LINK !  IMMEDIATE  DOES> CONTEXT ! ;
 VOCABULARY FORTH  ( -- ) \ the kernel's vocabulary
 ' FORTH >BODY CONSTANT FORTH-BODY  ( -- a )
 VOCABULARY ASSEMBLER  ( -- ) \ CODE's vocabulary (resident assembler: issue 4)

@@ -4,17 +4,17 @@
     1000O EQU STUBS       \ 001000-001777 default handler of vector v at STUBS+v
     2000O EQU ORIGIN      \ kernel code and dictionary from here up
   144000O EQU LIMIT       \ the dictionary ends below here
-  144000O EQU BUFFERS     \ 144000-154377 block buffers (forth/kernel/disk.fs)
-   10400O EQU BUFFERS-SIZE
-  154400O EQU SYSCELLS    \ 154400-154777 cells the CODE words share
-  154400O EQU RXHEAD      \   console ring: next slot the interrupt fills
-  154402O EQU RXTAIL      \   console ring: next slot KEY takes
-  154404O EQU RXLOST      \   characters dropped because the ring was full
-  154406O EQU TRAP-VEC    \   vector of the last unexpected trap
-  154410O EQU TRAP-PC     \   PC it interrupted
-  154412O EQU THROW-CELL  \   THROW's code address: CODE words raise errors through it
-  155000O EQU RING        \ 155000-155377 console receive ring (256 characters)
-     377O EQU RING-MASK
+  144000O EQU BUFFERS     \ 144000-153777 reserved for block buffers (4 x 1024)
+   10000O EQU BUFFERS-SIZE
+  154000O EQU SYSCELLS    \ 154000-154377 cells the CODE words share
+  154000O EQU RXHEAD      \   console ring: next slot the interrupt fills
+  154002O EQU RXTAIL      \   console ring: next slot KEY takes
+  154004O EQU RXLOST      \   characters dropped because the ring was full
+  154006O EQU TRAP-VEC    \   vector of the last unexpected trap
+  154010O EQU TRAP-PC     \   PC it interrupted
+  154012O EQU THROW-CELL  \   THROW's code address: CODE words raise errors through it
+  154400O EQU RING        \ 154400-155377 console receive ring (511 characters)
+     777O EQU RING-MASK
   155400O EQU TIB0        \ 155400-155777 terminal input buffer
      256  EQU TIB-SIZE
   156000O EQU S-LIMIT     \ 156000-156757 data stack (grows down from S0)

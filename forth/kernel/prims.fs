@@ -15,9 +15,8 @@ LABEL DODOES  ( -- a )  S -) W MOV,  RP ) RP )+ MOV,  NEXT,  END-CODE
 
 CODE EXIT  ( -- ) ( R: ip -- )  IP RP )+ MOV,  NEXT,  END-CODE  COMPILE-ONLY
 CODE (LIT)  ( -- x )  S -) IP )+ MOV,  NEXT,  END-CODE
-CODE BRANCH  ( -- )  IP IP ) MOV,  NEXT,  END-CODE
-CODE ?BRANCH  ( f -- )
-  S )+ TST,  EQ IF,  IP IP ) MOV,  NEXT,  THEN,  IP )+ TST,  NEXT,  END-CODE
+CODE BRANCH  ( -- )  BRANCH,  END-CODE
+CODE ?BRANCH  ( f -- )  S )+ TST,  EQ IF,  BRANCH,  THEN,  IP )+ TST,  NEXT,  END-CODE
 CODE EXECUTE  ( xt -- )  R0 S )+ MOV,  R0 ) JMP,  END-CODE
 
 \ DO loops. Return stack: leave address, bias = 100000-limit, index+bias.
@@ -30,10 +29,10 @@ CODE (?DO)  ( limit start -- )
   S ) 2 S I) CMP,  EQ IF,  S 4 # ADD,  IP IP ) MOV,  NEXT,  THEN,
   ' (DO) @# JMP,  END-CODE
 CODE (LOOP)  ( -- )
-  RP ) INC,  VS IF,  RP 6 # ADD,  IP )+ TST,  NEXT,  THEN,  IP IP ) MOV,  NEXT,
+  RP ) INC,  VS IF,  RP 6 # ADD,  IP )+ TST,  NEXT,  THEN,  BRANCH,
   END-CODE
 CODE (+LOOP)  ( n -- )
-  RP ) S )+ ADD,  VS IF,  RP 6 # ADD,  IP )+ TST,  NEXT,  THEN,  IP IP ) MOV,  NEXT,
+  RP ) S )+ ADD,  VS IF,  RP 6 # ADD,  IP )+ TST,  NEXT,  THEN,  BRANCH,
   END-CODE
 CODE I  ( -- n )  R0 RP ) MOV,  R0 2 RP I) SUB,  S -) R0 MOV,  NEXT,  END-CODE  COMPILE-ONLY
 CODE J  ( -- n )  R0 6 RP I) MOV,  R0 10O RP I) SUB,  S -) R0 MOV,  NEXT,  END-CODE  COMPILE-ONLY
@@ -114,8 +113,16 @@ CODE SM/REM  ( d n -- rem quot )  \ symmetric: DIV's own rounding
   S ) TST,  EQ IF,  -10 THROW,  THEN,
   R0 2 S I) MOV,  T 4 S I) MOV,  R0 S )+ DIV,  2 S I) T MOV,  S ) R0 MOV,  NEXT,
   END-CODE
-CODE UM/MOD  ( ud u -- rem quot )  \ unsigned: 16 shift-and-subtract steps
+CODE UM/MOD  ( ud u -- rem quot )
   S ) TST,  EQ IF,  -10 THROW,  THEN,
+  \ EIS DIV is signed: usable when divisor and high word are below 100000 and
+  \ the quotient fits (no V); otherwise 16 shift-and-subtract steps
+  S ) TST,  PL IF,
+    2 S I) TST,  PL IF,
+      R0 2 S I) MOV,  T 4 S I) MOV,  R0 S ) DIV,
+      VC IF,  S 2 # ADD,  S ) R0 MOV,  2 S I) T MOV,  NEXT,  THEN,
+    THEN,
+  THEN,
   W S )+ MOV,  R0 S )+ MOV,  T S ) MOV,  R3 16 # MOV,
   BEGIN,
     T ASL,  R0 ROL,
@@ -169,35 +176,38 @@ CODE SKIP  ( a u c -- a' u' )  \ first character not c, or the end
 \ never match (bit 5 stays in the compared length)
 CODE (FIND)  ( a u lfa -- nfa | 0 )
   W S )+ MOV,  RP -) IP MOV,
-  BEGIN,
-    W TST,  NE WHILE,
-    R0 2 W I) MOVB,  R0 177700O # BIC,
-    R0 S ) CMP,  EQ IF,
-      RP -) W MOV,  R3 2 S I) MOV,  IP W MOV,  IP 3 # ADD,
-      BEGIN,
-        T R3 )+ MOVB,  W IP )+ MOVB,
-        T W CMP,  NE IF,
-          141O # T CMP,  GE IF,  172O # T CMP,  LE IF,  T 40O # SUB,  THEN,  THEN,
-          141O # W CMP,  GE IF,  172O # W CMP,  LE IF,  W 40O # SUB,  THEN,  THEN,
-          T W CMP,
-        THEN,
-      EQ WHILE,
-        R0 DEC,
-        EQ IF,
-          W RP )+ MOV,  IP RP )+ MOV,  S 2 # ADD,  S ) W MOV,  S ) 2 # ADD,  NEXT,
-        THEN,
-      REPEAT,
-      W RP )+ MOV,
-    THEN,
-    W W ) MOV,
-  REPEAT,
+  W TST,  NE IF,
+    BEGIN,  \ a header of another length costs 6 instructions
+      R0 2 W I) MOVB,  R0 177700O # BIC,  R0 S ) CMP,
+      EQ IF,
+        RP -) W MOV,  R3 2 S I) MOV,  IP W MOV,  IP 3 # ADD,
+        BEGIN,
+          T R3 )+ MOVB,  W IP )+ MOVB,
+          T W CMP,  NE IF,
+            141O # T CMP,  GE IF,  172O # T CMP,  LE IF,  T 40O # SUB,  THEN,  THEN,
+            141O # W CMP,  GE IF,  172O # W CMP,  LE IF,  W 40O # SUB,  THEN,  THEN,
+            T W CMP,
+          THEN,
+        EQ WHILE,
+          R0 DEC,
+          EQ IF,
+            W RP )+ MOV,  IP RP )+ MOV,  S 2 # ADD,  S ) W MOV,  S ) 2 # ADD,  NEXT,
+          THEN,
+        REPEAT,
+        W RP )+ MOV,
+      THEN,
+      W W ) MOV,
+    EQ UNTIL,
+  THEN,
   IP RP )+ MOV,  S 2 # ADD,  S ) CLR,  NEXT,  END-CODE
 
-\ console (DL11 at 177560): receive by interrupt into a 256-character ring;
+\ console (DL11 at 177560): receive by interrupt into a ring of 511 characters;
 \ when the ring is full further characters are dropped and counted (RXLOST)
+\ ^C is not queued: it interrupts whatever runs (a runaway loop) with error -28
 LABEL RXINT
   RP -) R0 MOV,  RP -) T MOV,  RP -) W MOV,
   R0 177562O @# MOV,  R0 177600O # BIC,
+  3 # R0 CMP,  EQ IF,  0 # MTPS,  S S0 # MOV,  S -) CLR,  -28 THROW,  THEN,
   W RXHEAD @# MOV,  T W MOV,  T INC,  T RING-MASK INVERT # BIC,
   T RXTAIL @# CMP,
   EQ IF,  RXLOST @# INC,  ELSE,  RING W I) R0 MOVB,  RXHEAD @# T MOV,  THEN,
@@ -208,6 +218,8 @@ CODE KEY  ( -- c )
   BEGIN,  RXTAIL @# RXHEAD @# CMP,  NE UNTIL,
   W RXTAIL @# MOV,  S -) CLR,  S ) RING W I) MOVB,
   W INC,  W RING-MASK INVERT # BIC,  RXTAIL @# W MOV,  NEXT,  END-CODE
+CODE PRIORITY!  ( n -- )  \ processor priority 0-7
+  R0 S )+ MOV,  R0 ASL,  R0 ASL,  R0 ASL,  R0 ASL,  R0 ASL,  R0 MTPS,  NEXT,  END-CODE
 CODE EMIT  ( c -- )
   BEGIN,  177564O @# 200O # BIT,  NE UNTIL,  R0 S )+ MOV,  177566O @# R0 MOV,  NEXT,
   END-CODE

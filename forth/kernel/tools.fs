@@ -3,12 +3,14 @@
 : .S  ( -- )  \ the stack, deepest first
   ." <" DEPTH 0 .R ." > "  DEPTH DUP 0 ?DO DUP I - PICK . LOOP DROP ;
 VARIABLE COLUMN  ( -- a )
-: WORDS  ( -- )  \ the CONTEXT vocabulary, newest first
-  0 COLUMN !  CONTEXT @ @ BEGIN ?DUP WHILE
-    DUP 2+ C@ 32 AND 0= IF
+CREATE CURSORS 8 ALLOT  ( -- a ) \ WORDS' place in each chain
+: WORDS  ( -- )  \ the CONTEXT vocabulary, newest first (its chains merged)
+  0 COLUMN !  CONTEXT @ CURSORS 8 CMOVE
+  BEGIN CURSORS NEWEST-SLOT ?DUP WHILE
+    DUP @ DUP 2+ C@ 32 AND 0= IF
       COLUMN @ 64 > IF CR 0 COLUMN ! THEN
       DUP 2+ DUP .NAME SPACE C@ 31 AND 1+ COLUMN +!
-    THEN @
+    THEN @ SWAP !
   REPEAT ;
 : DUMP  ( a u -- )  \ bytes in BASE, then as characters
   OVER + SWAP ?DO
@@ -25,10 +27,10 @@ VARIABLE COLUMN  ( -- a )
   OVER ['] (LOOP) = OR SWAP ['] (+LOOP) = OR ;
 : SEE-COLON  ( body -- )
   DUP BEGIN  ( far a )
-    DUP @ DUP .XT  ( far a xt )
-    DUP ['] (LIT) = IF DROP 2+ DUP @ . ELSE
+    DUP @  ( far a xt )
+    DUP ['] (LIT) = IF DROP 2+ DUP @ . ELSE  DUP .XT
     DUP INLINE-STRING? IF DROP 2+ DUP COUNT TYPE [CHAR] " EMIT SPACE DUP C@ + 1- ALIGNED
-    ELSE DUP BRANCHING? IF DROP 2+ DUP @ DUP ." ->" .OCTAL SPACE ROT MAX SWAP
+    ELSE DUP BRANCHING? IF DROP 2+ DUP @ DUP ." ->" .OCTAL SPACE ROT UMAX SWAP
     ELSE ['] EXIT = IF 2DUP SWAP U< 0= IF 2DROP EXIT THEN THEN THEN THEN THEN
     2+
   AGAIN ;
@@ -42,11 +44,12 @@ VARIABLE COLUMN  ( -- a )
   ." is CODE at " DUP .OCTAL ." : " 8 0 DO DUP @ .OCTAL SPACE 2+ LOOP DROP CR ;
 
 \ ---- FORGET and MARKER -----------------------------------------------------------
-: TRIM  ( lfa body -- )  \ unlink chain entries at or above lfa
+: TRIM-CHAIN  ( lfa head -- )  \ unlink chain entries at or above lfa
   BEGIN 2DUP @ SWAP U< 0= OVER @ 0<> AND WHILE DUP @ @ OVER ! REPEAT 2DROP ;
+: TRIM  ( lfa body -- )  4 0 DO 2DUP I 2* + TRIM-CHAIN LOOP 2DROP ;
 : TRIM-VOCS  ( lfa -- )  \ trim every vocabulary; drop forgotten vocabularies
   VOC-LINK BEGIN DUP @ WHILE
-    DUP @ 2 PICK U< 0= IF DUP @ @ OVER ! ELSE 2DUP @ 2- TRIM @ THEN
+    DUP @ 2 PICK U< 0= IF DUP @ @ OVER ! ELSE 2DUP @ 8 - TRIM @ THEN
   REPEAT 2DROP ;
 : RESTORE-VECTORS  ( lfa -- )  \ no vector may point into forgotten code
   1000O 0 DO
@@ -59,8 +62,8 @@ VARIABLE COLUMN  ( -- a )
   DUP RESTORE-VECTORS  DUP TRIM-VOCS
   CONTEXT @ OVER U< 0= IF FORTH-BODY CONTEXT ! THEN
   CURRENT @ OVER U< 0= IF FORTH-BODY CURRENT ! THEN
-  DP !  CURRENT @ @ 2+ LAST ! ;
+  DP !  CURRENT @ NEWEST 2+ LAST ! ;
 : FORGET  ( "name" -- )
-  PARSE-NAME CURRENT @ @ (FIND) ?DUP 0= IF -13 THROW THEN 2- (FORGET) ;
+  PARSE-NAME CURRENT @ OVER CHAIN @ (FIND) ?DUP 0= IF -13 THROW THEN 2- (FORGET) ;
 : MARKER  ( "name" -- )  ALIGN HERE CREATE , DOES> @ (FORGET) ;
 : ENVIRONMENT?  ( a u -- false )  2DROP FALSE ;

@@ -38,11 +38,12 @@ there body! DP
 there body! FENCE
 tlast-nfa @ body! LAST
 tvoc-link @ body! VOC-LINK
-\ each vocabulary's head into its target body
-: voc-heads ( -- )  tvocs begin ?dup while
+\ each vocabulary's chain heads into its target body
+: write-heads ( -- )  tvocs begin ?dup while
     dup voc-body @ 0= if s" a vocabulary was never defined" fail then
-    dup voc-head @ over voc-body @ t!  3 cells + @ repeat ;
-voc-heads
+    #chains 0 do  dup voc-heads i cells + @  over voc-body @ i 2* + t!  loop
+    voc-next @ repeat ;
+write-heads
 \ vector v -> STUBS+v at priority 7; stub: JSR R0,@#TRAPPED, except the
 \ console receiver (JMP @#RXINT) and the line clock (RTI)
 : fill-vectors ( -- )

@@ -20,4 +20,10 @@
 \ a word access at an odd address: the 11/23 (F-11) would silently use the even
 \ address below, so @ ! and friends check and report error -23 themselves
 : ?ODD, ( -- )  R0 1 # BIT,  NE IF,  -23 THROW,  THEN, ;
+\ take a branch; every loop passes here, so a runaway push loop is caught
+\ (error -3) before the data stack runs over the buffers and the dictionary
+: BRANCH, ( -- )
+  s" S-LIMIT" label-value # S CMP,
+  LO IF,  S s" S0" label-value # MOV,  S -) CLR,  -3 THROW,  THEN,
+  IP IP ) MOV,  NEXT, ;
 asm>

@@ -47,13 +47,16 @@ create map-tab max-map 2* cells allot  variable #map  variable map-fd
   loop r> base !  map-fd @ close-file throw ;
 
 \ ---- target vocabularies on the host -----------------------------------------
-\ host voc: +0 host wordlist  +1 head (target LFA of newest word)  +2 target body
-\ address of the vocabulary word (0 until defined)  +3 next host voc
+\ host voc: +0 host wordlist  +1..+4 the heads of its four chains (target LFA of
+\ the newest word whose name length mod 4 is 0..3)  +5 target body address of the
+\ vocabulary word (0 until defined)  +6 next host voc
+4 constant #chains
 0 value tvocs
-: tvoc-new ( -- voc )  wordlist  here swap , 0 , 0 , tvocs ,  dup to tvocs ;
+: tvoc-new ( -- voc )  wordlist  here swap , 0 , 0 , 0 , 0 , 0 , tvocs ,  dup to tvocs ;
 : voc-wid ( voc -- wid ) @ ;
-: voc-head ( voc -- a ) cell+ ;
-: voc-body ( voc -- a ) 2 cells + ;
+: voc-heads ( voc -- a ) cell+ ;
+: voc-body ( voc -- a ) 5 cells + ;
+: voc-next ( voc -- a ) 6 cells + ;
 tvoc-new constant tforth
 variable tcurrent  tforth tcurrent !
 variable tcontext  tforth tcontext !
@@ -102,7 +105,8 @@ variable tlast-nfa  variable tlast-m
 : theader ( addr u -- )
   dup 0= if s" name expected" meta-error then
   dup 31 u> if s" name longer than 31 characters" meta-error then
-  talign  there  tcurrent @ voc-head @ t,  tcurrent @ voc-head !
+  dup 3 and cells tcurrent @ voc-heads + >r  \ the chain for this length
+  talign  there  r@ @ t,  r> !
   there tlast-nfa !  dup tc,  2dup bounds ?do i c@ tc, loop  talign
   2dup there -rot map-add
   get-current >r  tcurrent @ voc-wid set-current

@@ -163,6 +163,7 @@ def test_list_and_index(image, boot):
 def test_disk_not_attached_is_a_clear_error(tmp_path):
     with Machine(disk=blank_disk(tmp_path / "x.dsk"),
                  extra_commands="detach rl0\n") as m:
+        assert "drive not ready (no disk attached?)" in m.send(".DISK")
         r = m.reply("1 BLOCK")
         assert not r.ok and "block read error" in r.error
         assert "RL0 block 1 read not ready" in r.output and "not-ready" in r.output
@@ -172,6 +173,7 @@ def test_disk_not_attached_is_a_clear_error(tmp_path):
 def test_write_locked_disk_keeps_the_update(tmp_path):
     disk = blank_disk(tmp_path / "ro.dsk")
     with Machine(disk=disk, extra_commands="set rl0 locked\n") as m:
+        assert m.send(".DISK").endswith("blocks 0-10239, write-locked.")
         m.send("9 BLOCK 3 CHAR Z FILL UPDATE")
         r = m.reply("FLUSH")
         assert not r.ok and "block write error" in r.error
@@ -197,6 +199,7 @@ def test_seek_selects_cylinder_and_head(image, boot):
     # After a transfer, READ HEADER reports the track under the heads
     # (cylinder * 2 + head): block n lives on track n / 10.
     m = boot()
+    assert m.send(".DISK") == "Disk: RL02 on the RLV12 at 174400, blocks 0-10239."
     for n in (115, 105, 10239, 0, 31):
         m.send(f"{n} BUFFER DROP UPDATE FLUSH")
         assert m.send("4 RL-DO DROP RLMP @ 6 RSHIFT .").split() == [str(n // 10)]
@@ -223,3 +226,11 @@ def test_a_controller_that_never_finishes_is_an_error_not_a_hang(tmp_path):
         assert not r.ok and r.error.startswith("block read error")
         assert "RL0 block 10239 read timed out: CSR=" in r.output
         assert m.send("1 2 + .").split() == ["3"]
+
+
+def test_a_block_that_loads_itself_ends_in_an_error(image, boot):
+    put_block(image, 80, ["( runaway ) 80 LOAD"])
+    m = boot()
+    r = m.reply("80 LOAD")
+    assert not r.ok and "overflow" in r.error and "in block 80 line 0" in r.error
+    assert m.send("BLK @ . 1 2 + .").split() == ["0", "3"]

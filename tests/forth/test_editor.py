@@ -100,3 +100,21 @@ def test_bad_editor_input_changes_nothing(image):
         assert listed_lines(m.send("EDITOR 0 T")) == {0: "keep me"}
         m.send("0 P " + "y" * 64)                # exactly 64 is fine
         assert listed_lines(m.send("0 T")) == {0: "y" * 64}
+
+
+def test_change_text_inside_a_line(image):
+    with Machine(disk=image) as m:
+        m.send("EDITOR 600 WIPE 0 P : SQ DUP* ; ( square )")
+        m.send("0 C DUP*^DUP *")
+        m.send("0 C ( square )^( n -- n*n )")
+        assert listed_lines(m.send("0 T")) == {0: ": SQ DUP * ; ( n -- n*n )"}
+        m.send("0 C SQ ^")                       # an empty new text deletes
+        assert listed_lines(m.send("0 T")) == {0: ": DUP * ; ( n -- n*n )"}
+        for bad, message in [("0 C absent^x", "not in the line"),
+                             ("0 C no caret", "use: n C old^new"),
+                             ("0 C ^x", "use: n C old^new"),
+                             ("0 C DUP^" + "D" * 60, "longer than 64")]:
+            r = m.reply("EDITOR " + bad)
+            assert not r.ok and message in r.error, bad
+        assert listed_lines(m.send("EDITOR 0 T")) == {0: ": DUP * ; ( n -- n*n )"}
+        assert listed_lines(m.send("L"))[1] == ""

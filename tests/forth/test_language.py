@@ -23,6 +23,12 @@ def test_numbers_octal_negative_base(forth):
 
 
 def test_plus_loop_counts_down_through_zero(forth):
+    assert forth.send("0 3 DO I . -1 +LOOP") == "3 2 1 0 "  # at the terminal too
+    before = forth.send("HERE .")
+    assert forth.send("1 IF 5 ELSE 6 THEN .") == "5 "
+    assert forth.send("3 BEGIN DUP . 1- DUP 0= UNTIL DROP") == "3 2 1 "
+    assert forth.send("2 0 DO 2 0 DO J I + . LOOP LOOP") == "0 1 1 2 "
+    assert forth.send("HERE .") == before
     forth.send(": DOWN 0 3 DO I . -1 +LOOP ;")
     assert forth.send("DOWN") == "3 2 1 0 "
     forth.send(": UP2 10 0 DO I . 3 +LOOP ;")
@@ -76,9 +82,11 @@ def test_forget_and_marker_restore_vectors(forth):
     assert "vector 000300 restored to its default handler" in out
     assert forth.send("300O @ 1300O = .") == "-1 "
     assert "undefined word" in forth.reply("MY-HANDLER").error
-    forth.send(": TEMP1 1 ; : TEMP2 2 ;")
+    forth.send(": TEMP1 1 ; : TMP2 2 ; : TEMPO3 3 ; : T4 4 ;")  # all four chains
+    assert forth.send("WORDS").startswith("T4 TEMPO3 TMP2 TEMP1 ")
     forth.send("FORGET TEMP1")
-    assert "undefined word" in forth.reply("TEMP2").error
+    for name in ("TEMP1", "TMP2", "TEMPO3", "T4"):
+        assert "undefined word" in forth.reply(name).error
     assert "cannot forget kernel words" in forth.reply("FORGET DUP").error
 
 
@@ -153,14 +161,18 @@ def test_harness_reports_a_halt():
 
 def test_interrupt_handler_in_code_then_forget(forth):
     """The appendix's pattern: register-saving macros as colon definitions that
-    assemble, a CODE word ending in RTI installed with ' into the clock vector
-    (the stock 11/23 clock always interrupts at 60 Hz), FORGET restores it."""
+    assemble, a CODE word ending in RTI installed with ' into the clock vector,
+    FORGET restores it. The clock is enabled through LKS where it exists (the
+    project's KW11-L); the stock 11/23 has no LKS (the bus error is CAUGHT) and
+    always interrupts."""
     forth.send_lines("""MARKER CLOCK-TEST
 : Save-Regs ASSEMBLER RP -) R0 MOV, RP -) T MOV, RP -) W MOV, FORTH ;
 : Restore-Regs ASSEMBLER W RP )+ MOV, T RP )+ MOV, R0 RP )+ MOV, FORTH ;
 VARIABLE TICKS
 CODE Tick Save-Regs TICKS @# INC, Restore-Regs RTI,
-: Install ' Tick 100O ! ;
+: LKS-ON 100O 177546O ! ;
+: CLOCK-ON ['] LKS-ON CATCH DROP ;
+: Install ' Tick 100O ! CLOCK-ON ;
 : WAIT-TICKS ( n -- ) TICKS @ + BEGIN DUP TICKS @ - 0< UNTIL DROP ;""")
     forth.send("Install 3 WAIT-TICKS")
     assert int(forth.send("TICKS @ .")) >= 3
@@ -169,10 +181,10 @@ CODE Tick Save-Regs TICKS @# INC, Restore-Regs RTI,
 
 
 def test_ring_overflow_is_reported(forth):
-    """More than 256 characters typed while a word runs: the excess is dropped
+    """More than 511 characters typed while a word runs: the excess is dropped
     and the loss is reported at the next line."""
-    forth.send(": BUSY2 10 0 DO 30000 0 DO LOOP LOOP ;")
-    forth.child.send("BUSY2\r" + ("1 DROP " * 11 + "\r") * 5)
+    forth.send(": BUSY2 20 0 DO 30000 0 DO LOOP LOOP ;")
+    forth.child.send("BUSY2\r" + ("1 DROP " * 11 + "\r") * 9)
     forth.child.expect("characters lost: typed too far ahead")
     forth.child.send("\r")  # ends whatever line the ring cut short
     forth.child.send(".( in step)\r")
