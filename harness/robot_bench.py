@@ -16,7 +16,8 @@ import time
 from pathlib import Path
 
 from harness import timing
-from harness.robot import KERNEL, RATE, Robot, kernel_symbols, ring_commands
+from harness.robot import KERNEL, RATE, Robot
+from harness.scripted_machine import feed_commands, read_kernel_map
 
 ROOT = Path(__file__).resolve().parent.parent
 DISK = ROOT / "build" / "robot.dsk"
@@ -25,10 +26,11 @@ DISK = ROOT / "build" / "robot.dsk"
 def setup_script(disk, lines):
     """Boot, stop at QUERY, give each line in turn; leave the machine stopped
     at QUERY after the last one, breakpoint removed."""
-    sym = kernel_symbols()
+    sym = read_kernel_map()
     cmds = [f"attach rl0 {disk}", f"load {KERNEL}", f"break {sym['QUERY']:o}", "go"]
     for line in lines:
-        cmds += ring_commands(line, sym["RXHEAD"], sym["RXTAIL"], sym["RING"]) + ["cont"]
+        # empty the ring at index 0, then type the line into it
+        cmds += [f"deposit {sym['RXTAIL']:o} 0"] + feed_commands(sym, line, 0) + ["cont"]
     return "\n".join(cmds + [f"nobreak {sym['QUERY']:o}"]) + "\n"
 
 

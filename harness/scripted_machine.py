@@ -79,14 +79,26 @@ def read_kernel_map(path=KERNEL_MAP):
     return symbols
 
 
+def feed_commands(sym, text, head):
+    """SIMH deposits that put `text` and its CR into the FORTH's console receive
+    ring at index `head` (the ring must be empty: RXTAIL = RXHEAD = head) and
+    advance RXHEAD, exactly as the DL11 receive interrupt would have."""
+    mask, ring = sym["RING-MASK"], sym["RING"]
+    feed = [f"deposit -b {ring + ((head + i) & mask):o} {ord(c):o}"
+            for i, c in enumerate(text + "\r")]
+    return feed + [f"deposit {sym['RXHEAD']:o} {(head + len(text) + 1) & mask:o}"]
+
+
 FORTH_ERROR = re.compile(r"\r\nError: ([^\r\n]*)")
 
 
 class ScriptedMachine(contextlib.AbstractContextManager):
     def __init__(self, disk, trace=None, simulator=PDP11, kernel=KERNEL,
-                 kernel_map=KERNEL_MAP, line_limit=60.0, wall_timeout=300, cwd=ROOT):
+                 kernel_map=KERNEL_MAP, line_limit=60.0, wall_timeout=300, cwd=ROOT,
+                 settings=()):
         """`disk` and `trace` are attached as given, relative to `cwd`: SIMH
-        prints them in SHOW, so a scripted run passes bare names."""
+        prints them in SHOW, so a scripted run passes bare names. `settings`
+        are SIMH commands run before the trace is attached (SET PLANT ...)."""
         for what, path in (("simulator", simulator), ("kernel", kernel),
                            ("disk", Path(cwd) / disk)):
             if not Path(path).is_file():
@@ -99,6 +111,7 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         ini = Path(self._tmp.name) / "boot.ini"
         ini.write_text(f"do {MACHINE_INI}\n"
                        f"attach rl0 {disk}\n"
+                       + "".join(f"{c}\n" for c in settings)
                        + (f"attach plant {trace}\n" if trace else "")
                        + f"load {Path(kernel).resolve()}\n"
                        f"break {self.sym['QUERY']:o}\n")
@@ -160,8 +173,9 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         return max(1, round(seconds * self.rate))
 
     # ---- what a script does ---------------------------------------------------------
-    def line(self, text):
-        """Type one line (as if typed ahead) and run until the next prompt."""
+    def line(self, text, limit=None):
+        """Type one line (as if typed ahead) and run until the next prompt, or
+        for `limit` simulated seconds (default line_limit) if it takes longer."""
         if len(text) > self.max_line:
             raise ScriptError(f"line longer than {self.max_line} characters")
         if any(not (32 <= ord(c) < 127 or c == "\t") for c in text):
@@ -171,15 +185,22 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         head = int(found[f"{self.sym['RXHEAD']:o}"], 8)
         if head != int(found[f"{self.sym['RXTAIL']:o}"], 8):
             raise ScriptError("the console ring is not empty at the prompt")
-        mask, ring = self.sym["RING-MASK"], self.sym["RING"]
-        feed = [f"deposit -b {ring + ((head + i) & mask):o} {ord(c):o}"
-                for i, c in enumerate(text + "\r")]
-        feed.append(f"deposit {self.sym['RXHEAD']:o} {(head + len(text) + 1) & mask:o}")
-        self._feed.write_text("\n".join(feed) + "\n")
-        answer = self._run(f"do {self._feed}\rstep {self._steps(self.line_limit)}",
+        self._feed.write_text("\n".join(feed_commands(self.sym, text, head)) + "\n")
+        limit = self.line_limit if limit is None else limit
+        answer = self._run(f"do {self._feed}\rstep {self._steps(limit)}",
                            text, extra_prompts=1)
+        return self._limited(answer, limit)
+
+    def resume(self, limit=None):
+        """Let a line that is still running go on to the next prompt (or for
+        `limit` simulated seconds more)."""
+        limit = self.line_limit if limit is None else limit
+        return self._limited(self._run(f"step {self._steps(limit)}", "resume"), limit)
+
+    @staticmethod
+    def _limited(answer, limit):
         if answer.stopped == "step":
-            answer.stopped = (f"no prompt within {self.line_limit:g} simulated seconds "
+            answer.stopped = (f"no prompt within {limit:g} simulated seconds "
                               "(the line is still running)")
         return answer
 

@@ -4,16 +4,19 @@
 \ them), as block 1008 does; either way the assembler checks it (ASM-END).
 
 VARIABLE CODE-OPEN  ( -- a ) \ true while a CODE body is being assembled
+VARIABLE CODE-LFA  ( -- a ) \ header of that word: an error discards it whole
 ' ASSEMBLER >BODY CONSTANT ASSEMBLER-BODY  ( -- a )
-: END-CODE  ( -- )
-  0 CODE-OPEN !  CURRENT @ CONTEXT !  ASSEMBLER ASM-END FORTH ;
+: END-CODE  ( -- )  \ ASM-END first: if it fails, the word is still open
+  ASSEMBLER ASM-END FORTH  0 CODE-OPEN !  CURRENT @ CONTEXT ! ;
 : ?END-CODE  ( -- )  CODE-OPEN @ IF END-CODE THEN ;
 : ASSEMBLE  ( -- )  \ assembler first, operand slots clear, depth remembered
   ASSEMBLER-BODY CONTEXT !  TRUE CODE-OPEN !  ASSEMBLER ASM-START FORTH ;
 : CODE  ( "name" -- )  \ header whose code field is the machine code that follows
-  ?END-CODE PARSE-NAME HEADER, ASSEMBLE ;
+  ?END-CODE ALIGN HERE CODE-LFA !  PARSE-NAME HEADER, ASSEMBLE ;
 : ;CODE  ( colon-sys -- )  \ children run the code after it with W = body
-  ['] (DOES>) ,  5726O ,  4 ?PAIRS  REVEAL  POSTPONE [  0 COLON-LFA !  ASSEMBLE ;
+  ['] (DOES>) ,  5726O ,  4 ?PAIRS  REVEAL  POSTPONE [
+  COLON-LFA @ CODE-LFA !  0 COLON-LFA !  ASSEMBLE ;
   IMMEDIATE COMPILE-ONLY
-: CODE-ERROR  ( -- )  \ after any error: no CODE body open, no stale operand
-  0 CODE-OPEN !  ASSEMBLER ASM-RESET FORTH ;
+: CODE-ERROR  ( -- )  \ after any error: no CODE word half-assembled, no stale operand
+  CODE-OPEN @ IF CODE-LFA @ ?DUP IF UNLINK THEN THEN
+  0 CODE-OPEN !  0 CODE-LFA !  ASSEMBLER ASM-RESET FORTH ;

@@ -8,7 +8,7 @@ def test_tick_is_state_smart(boot):
     r = boot()
     r.send(": T1 ( -- xt ) ' DUP ;")           # compiles DUP's address as a literal
     assert numbers(r.send("T1 ' DUP = ."))[0] == -1
-    assert numbers(r.send("T1 (') DUP = ."))[0] == -1  # the parsing tick, kept
+    assert numbers(r.send("T1 TICK DUP = ."))[0] == -1  # the parsing tick, kept
 
 
 def test_code_and_semicolon_code(boot):

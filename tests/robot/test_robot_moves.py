@@ -72,22 +72,23 @@ def test_show_plant_agrees_with_read_counter(robot):
             assert abs(plant[axis]["counter"] - value) <= slack, (axis, value, plant[axis])
 
 
-def test_hunting_can_keep_move_complete_waiting(boot):
-    """400 -300 600 0: x settles into a 4-tick cycle 383 391 412 405 that never
-    enters 396..404, so Command.Status x stays 1 and Move.Complete? never returns."""
-    # where 1000 LOAD puts Command.Status (the same on every boot); asked on
-    # another machine, since any extra line here would shift the hunting's phase
-    status = numbers(boot().send("1000 LOAD Command.Status ."))[0] & 0xFFFF
-    robot = boot(trace=True)
-    robot.send("1000 LOAD Set.Up.Robot")
-    out = robot.begin("400 -300 600 0 Abs.Move Move.Complete?", 30.0)
-    assert "ok" not in out  # the FORTH is still inside Move.Complete?
+def test_axes_hunt_instead_of_resting(robot):
+    """After a move, x never comes to rest: whenever it drifts out of Range the
+    printed 1006 restarts it at MaxVel (no ramp), it overshoots and is braked in
+    proportion to the distance left, round and round. Measured over 25 s after
+    400 -300 600 0 and 1600 800 400 0: x's counter spans 44 and 84 counts, far
+    wider than the +-5 count Range window. On some kernels the cycle steps over
+    the window for good and Move.Complete? never returns (docs/servo.md);
+    whether it does depends on the tick phase, so only the hunting is asserted."""
+    robot.send("400 -300 600 0 Abs.Move Move.Complete?")
+    settled = robot.time() + 2.0
+    robot.idle(25.0)
     rows = [r for r in csv.DictReader(open(robot.trace_path))
-            if r["axis"] == "X" and float(r["time_s"]) > 30]
-    assert [robot.examine(status + 2 * k) for k in range(3)] == [1, 0, 0]  # x waits
-    # the trace's rows at DAC writes and samples: x swings 383..413 around 400
-    seen = {int(r["counter"]) for r in rows}
-    assert min(seen) < 390 and max(seen) > 410, sorted(seen)
+            if r["axis"] == "X" and float(r["time_s"]) > settled]
+    seen = [int(r["counter"]) for r in rows]
+    assert max(seen) - min(seen) > 20, (min(seen), max(seen))
+    assert min(seen) < 400 < max(seen)                # around the target, both sides
+    assert max(abs(c - 400) for c in seen) < 60
 
 
 def test_z_sits_on_its_lower_stop(boot):
