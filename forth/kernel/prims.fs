@@ -158,19 +158,9 @@ CODE FILL  ( a n c -- )
 
 \ parsing helpers: with a blank delimiter any control character is a blank
 CODE SCAN  ( a u c -- a' u' )  \ first c, or the end
-  R0 S )+ MOV,  T S ) MOV,  W 2 S I) MOV,
-  BEGIN,
-    T TST,  EQ IF,  2 S I) W MOV,  S ) T MOV,  NEXT,  THEN,
-    BLANKCHAR,  R3 R0 CMP,  EQ IF,  2 S I) W MOV,  S ) T MOV,  NEXT,  THEN,
-    W INC,  T DEC,
-  AGAIN,  END-CODE
+  EQ SCAN-LOOP,  END-CODE
 CODE SKIP  ( a u c -- a' u' )  \ first character not c, or the end
-  R0 S )+ MOV,  T S ) MOV,  W 2 S I) MOV,
-  BEGIN,
-    T TST,  EQ IF,  2 S I) W MOV,  S ) T MOV,  NEXT,  THEN,
-    BLANKCHAR,  R3 R0 CMP,  NE IF,  2 S I) W MOV,  S ) T MOV,  NEXT,  THEN,
-    W INC,  T DEC,
-  AGAIN,  END-CODE
+  NE SCAN-LOOP,  END-CODE
 
 \ (FIND): search one vocabulary chain, case-insensitively; smudged words
 \ never match (bit 5 stays in the compared length)

@@ -13,6 +13,16 @@
 : BLANKCHAR, ( -- )
   R3 W ) MOVB,  R3 $FF00 # BIC,
   32 # R0 CMP,  EQ IF,  32 # R3 CMP,  LOS IF,  R3 32 # MOV,  THEN,  THEN, ;
+\ SCAN and SKIP ( a u c -- a' u' ): step W along the string (T characters left)
+\ until the character at W, compared with the delimiter in R0, satisfies cond
+\ (EQ: the first c; NE: the first character not c), or the string ends
+: SCAN-LOOP, ( cond -- )
+  >r  R0 S )+ MOV,  T S ) MOV,  W 2 S I) MOV,
+  BEGIN,
+    T TST,  EQ IF,  2 S I) W MOV,  S ) T MOV,  NEXT,  THEN,
+    BLANKCHAR,  R3 R0 CMP,  r> IF,  2 S I) W MOV,  S ) T MOV,  NEXT,  THEN,
+    W INC,  T DEC,
+  AGAIN, ;
 \ raise FORTH error n from a CODE word: replace the top of stack with n and
 \ continue in the thread cell holding THROW's code address
 : THROW, ( n -- )
