@@ -183,7 +183,9 @@ CODE Tick Save-Regs TICKS @# INC, Restore-Regs RTI,
 def test_ring_overflow_is_reported(forth):
     """More than 511 characters typed while a word runs: the excess is dropped
     and the loss is reported at the next line."""
-    forth.send(": BUSY2 20 0 DO 30000 0 DO LOOP LOOP ;")
+    # long enough (18M instructions, ~0.2 s of host time) that the host has written
+    # every character before the word ends, even on a loaded machine
+    forth.send(": BUSY2 100 0 DO 30000 0 DO LOOP LOOP ;")
     forth.child.send("BUSY2\r" + ("1 DROP " * 11 + "\r") * 9)
     forth.child.expect("characters lost: typed too far ahead")
     forth.child.send("\r")  # ends whatever line the ring cut short
