@@ -18,11 +18,12 @@ from pathlib import Path
 
 import pexpect
 
+from harness.disk import RL02_BYTES
+
 ROOT = Path(__file__).resolve().parent.parent
 SIMULATOR = ROOT / os.environ.get("PDP11_SIM", "build/pdp11")
 KERNEL = ROOT / "build" / "kernel.lda"
 MACHINE_INI = ROOT / "pdp11-devices" / "machine.ini"
-RL02_BYTES = 10_485_760  # 512 cylinders x 2 heads x 40 sectors x 256 bytes
 
 OK = re.compile(r" ok\r\n")
 ERROR = re.compile(r"\r\nError: ([^\r\n]*)\r\n")

@@ -10,7 +10,8 @@ import shutil
 import subprocess
 from pathlib import Path
 
-from harness.machine import Machine, blank_disk
+from harness import disk
+from harness.machine import Machine
 
 ROOT = Path(__file__).resolve().parents[2]
 BUILD_FS = ROOT / "forth" / "meta" / "build.fs"
@@ -18,7 +19,7 @@ KERNEL = ROOT / "build" / "kernel.lda"
 DRIVER = ROOT / "tests" / "asm" / "resident-driver.fs"
 TARGET_INCLUDE = 's" forth/asm-target.fs" kernel'
 BOOT_LINE = 's" forth/kernel/boot.fs" kernel'
-BLOCK = 1024
+BLOCK = disk.BLOCK_BYTES
 DRIVER_BLOCK, CORPUS_BLOCK, ERROR_BLOCK = 100, 101, 300
 
 
@@ -57,14 +58,13 @@ def _pack(texts):
 
 def _disk(path, placed):
     """An RL02 image holding {block number: text}."""
-    blank_disk(path)
-    with open(path, "r+b") as f:
-        for number, text in placed.items():
-            data = text.encode("ascii")
-            if len(data) > BLOCK:
-                raise ValueError(f"block {number} overflows: {text[:60]!r}")
-            f.seek(number * BLOCK)
-            f.write(data.ljust(BLOCK))
+    blocks = {}
+    for number, text in placed.items():
+        data = text.encode("ascii")
+        if len(data) > BLOCK:
+            raise ValueError(f"block {number} overflows: {text[:60]!r}")
+        blocks[number] = data.ljust(BLOCK)
+    Path(path).write_bytes(disk.pack(blocks))
     return path
 
 
@@ -88,8 +88,8 @@ def assemble(good, bad, tmp):
     if CORPUS_BLOCK + len(corpus) > ERROR_BLOCK:
         raise ValueError("the corpus outgrew its blocks")
     placed.update({ERROR_BLOCK + i: _unit(t) for i, t in enumerate(bad)})
-    disk = _disk(tmp / "corpus.dsk", placed)
-    with Machine(disk=disk, kernel=kernel, timeout=120) as m:
+    image = _disk(tmp / "corpus.dsk", placed)
+    with Machine(disk=image, kernel=kernel, timeout=120) as m:
         m.send(f"{DRIVER_BLOCK} LOAD")
         words = _words(m.send(f"{CORPUS_BLOCK} {CORPUS_BLOCK + len(corpus) - 1} THRU"))
         errors = []
