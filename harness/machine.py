@@ -4,9 +4,9 @@
         m.send("1 2 + .")              # -> "3 "   (raises ForthError on an error)
         m.reply("1 @")                 # -> Reply(ok=False, output=..., error=...)
 
-Flow control: a line is sent only after the previous one was answered (" ok" or
-"Error: ..."), and the answer is awaited with pexpect (no sleeps). A simulator
-halt (the sim> prompt) or EOF raises MachineHalted; a missing answer raises
+Flow control: a line is sent only after the previous one was answered (" ok",
+" compiled" while a definition is open, or "Error: ..."), and the answer is
+awaited with pexpect (no sleeps). A simulator halt (the sim> prompt) or EOF raises MachineHalted; a missing answer raises
 TimeoutError. The simulator binary is one setting: SIMULATOR below, or the
 environment variable PDP11_SIM (make passes it from its PDP11_SIM variable).
 """
@@ -25,7 +25,7 @@ SIMULATOR = ROOT / os.environ.get("PDP11_SIM", "build/pdp11")
 KERNEL = ROOT / "build" / "kernel.lda"
 MACHINE_INI = ROOT / "pdp11-devices" / "machine.ini"
 
-OK = re.compile(r" ok\r\n")
+OK = re.compile(r" (?:ok|compiled)\r\n")   # compiled: a definition or structure is open
 ERROR = re.compile(r"\r\nError: ([^\r\n]*)\r\n")
 SIM_PROMPT = re.compile(r"sim> ")
 

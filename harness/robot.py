@@ -64,9 +64,10 @@ class Robot(ScriptedMachine):
         if answer.error:
             return False, out, answer.error
         out = out.rstrip("\n")
-        if not out.endswith(" ok"):
-            raise MachineHalted(f"no ok after {line!r}: {out!r}")
-        return True, out[:-3], ""
+        for prompt in (" ok", " compiled"):      # compiled: a definition is open
+            if out.endswith(prompt):
+                return True, out[:-len(prompt)], ""
+        raise MachineHalted(f"no ok after {line!r}: {out!r}")
 
     def reply(self, line, timeout=None):
         """Give the FORTH one line; (ok, output, error message)."""

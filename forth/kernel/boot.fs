@@ -6,6 +6,7 @@
   CR ;
 : COLD  ( -- )
   FORTH-BODY DUP CONTEXT ! CURRENT !  DECIMAL  0 HANDLER !  0 BLK !  0 STATE !
+  -1 TRAP-VEC !  CLEAR-STACK
   ['] CODE-ERROR 'ON-ERROR !
   BANNER ."  ok" CR  QUIT ;
 
@@ -13,10 +14,13 @@
 \ JSR R0,@#TRAPPED; the vector is recovered from R0, the trap frame dropped,
 \ and the interpreter's error path entered with -256 THROW, still at priority 7:
 \ THROW first takes a handler that trapped out of its vector (DISARM), then
-\ lowers the priority.
-LABEL TRAPPED
+\ lowers the priority. The return stack restarts at the innermost CATCH frame
+\ (THROW goes there anyway): a trap caused by a wild RP (0 RP!) is reported too.
+LABEL TRAPPED  \ first kernel mode, priority 7: a trap pushed on a wild stack can
+  177776O @# 340O # MOV,  \ have written its JSR's R0 into the PSW at 177776
   R0 STUBS 4 + # SUB,  TRAP-VEC @# R0 MOV,
-  RP )+ TST,  TRAP-PC @# RP )+ MOV,  RP )+ TST,
+  RP )+ TST,  TRAP-PC @# RP )+ MOV,
+  RP ' HANDLER >BODY @# MOV,  EQ IF,  RP RP0 # MOV,  THEN,
   S S0 # MOV,  S -) -256 # MOV,  \ priority stays 7 until the report is out
   IP HERE 6 + # MOV,  NEXT,  ' THROW ,  END-CODE
 LABEL TICK  ( line clock, vector 100: nothing to do until a servo is installed )

@@ -44,8 +44,9 @@ VARIABLE WARNING  ( -- a )
 : MOD  ( a b -- rem )  /MOD DROP ;
 : */MOD  ( a b c -- rem quot )  >R M* R> SM/REM ;
 : */  ( a b c -- quot )  */MOD NIP ;
-: ROLL  ( xu .. x0 u -- xu-1 .. x0 xu )
-  DUP IF SWAP >R 1- RECURSE R> SWAP EXIT THEN DROP ;
+: ROLL  ( xu .. x0 u -- xu-1 .. x0 xu )  \ u beyond the stack: error -4
+  DUP DEPTH 2 - U< 0= IF -4 THROW THEN
+  DUP 1+ PICK >R  SP@ 2+ DUP 2+ ROT 2* CMOVE>  2DROP R> ;
 : WITHIN  ( x lo hi -- f )  OVER - >R - R> U< ;
 : CELL+  ( a -- a+2 )  2+ ;
 : CELLS  ( n -- 2n )  2* ;
@@ -64,11 +65,12 @@ VARIABLE WARNING  ( -- a )
 
 \ ---- errors: CATCH and THROW (Forth-94 exception words) --------------------------
 : CATCH  ( xt -- 0 | code )
-  SP@ >R  HANDLER @ >R  RP@ HANDLER !  EXECUTE  R> HANDLER !  R> DROP  0 ;
+  DEPTH 1 < IF -4 THROW THEN  SP@ >R  HANDLER @ >R  RP@ HANDLER !  EXECUTE  R> HANDLER !  R> DROP  0 ;
 : THROW  ( code -- )
   ?DUP IF
     DUP -256 = IF DISARM 0 PRIORITY! THEN  \ a trap arrives at priority 7
-    HANDLER @ 0= IF .ERROR WARM THEN  \ no CATCH: report, restart QUIT
+    HANDLER @ 0= IF RP0 RP! ABORT-TO-QUIT THEN  \ no CATCH frame: nothing on the
+    \ return stack is needed, however broken it is
     HANDLER @ RP!  R> HANDLER !  R> SWAP >R SP! DROP R> THEN ;
 VARIABLE ABORT-MSG  ( -- a ) \ counted message of the last ABORT"
 : ABORT  ( -- )  -1 THROW ;
@@ -85,7 +87,6 @@ VARIABLE ABORT-MSG  ( -- a ) \ counted message of the last ABORT"
 : C,  ( c -- )  HERE 1 ALLOT C! ;
 : ALIGN  ( -- )  HERE 1 AND ALLOT ;
 : PAD  ( -- a )  HERE 68 + ;
-: COMPILE,  ( xt -- )  , ;
 : NAME>  ( nfa -- xt )  DUP C@ 31 AND + 1+ ALIGNED ;
 : >BODY  ( xt -- a )  4 + ;
 
@@ -99,13 +100,17 @@ VARIABLE ABORT-MSG  ( -- a ) \ counted message of the last ABORT"
 
 \ ---- pictured numeric output -------------------------------------------------------
 : <#  ( -- )  PAD HLD ! ;
-: HOLD  ( c -- )  -1 HLD +! HLD @ C! ;
+: HOLD  ( c -- )  \ the buffer runs from PAD down to HERE: error -17 when full
+  HLD @ 1- DUP HERE PAD WITHIN 0= IF -17 THROW THEN  DUP HLD ! C! ;
 : DIGIT  ( n -- c )  DUP 9 > IF 7 + THEN [CHAR] 0 + ;
-: #  ( ud -- ud' )  BASE @ >R  0 R@ UM/MOD  R> SWAP >R UM/MOD  R> ROT DIGIT HOLD ;
+: ?BASE  ( -- )  \ BASE outside 2..36 would print nothing sensible (1: for ever)
+  BASE @ 2 37 WITHIN 0= IF -24 THROW THEN ;
+: #  ( ud -- ud' )  ?BASE BASE @ >R  0 R@ UM/MOD  R> SWAP >R UM/MOD  R> ROT DIGIT HOLD ;
 : #S  ( ud -- 0 0 )  BEGIN # 2DUP OR 0= UNTIL ;
 : #>  ( ud -- a u )  2DROP HLD @ PAD OVER - ;
 : SIGN  ( n -- )  0< IF [CHAR] - HOLD THEN ;
-: D.R  ( d n -- )  >R TUCK DABS <# #S ROT SIGN #> R> OVER - SPACES TYPE ;
+: D.R  ( d n -- )  \ every number printer ends here: no digit from an empty stack
+  DEPTH 3 < IF -4 THROW THEN  >R TUCK DABS <# #S ROT SIGN #> R> OVER - SPACES TYPE ;
 : D.  ( d -- )  0 D.R SPACE ;
 : .  ( n -- )  S>D D. ;
 : U.  ( u -- )  0 D. ;

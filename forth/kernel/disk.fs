@@ -130,7 +130,9 @@ CREATE CUR-BLK  ( -- a ) -1 ,   \ the block UPDATE marks, -1 = none
    DUP (BLOCK) DROP                  \ a bad block fails here, source unchanged
    BLK @ >R >IN @ >R SOURCE-ID @ >R  BLK ! 0 >IN ! 0 SOURCE-ID !
    INTERPRET  R> SOURCE-ID ! R> >IN ! R> BLK ! ;
-: THRU ( blk1 blk2 -- ) 1+ SWAP ?DO I LOAD LOOP ;
+: BLOCK-RANGE ( blk1 blk2 -- blk2+1 blk1 ) \ DO limits; blk1 > blk2 is an error
+   2DUP U> ABORT" first block after the last" 1+ SWAP ;
+: THRU ( blk1 blk2 -- ) BLOCK-RANGE ?DO I LOAD LOOP ;
 : --> ( -- ) \ continue loading with the next block
    BLK @ 0= ABORT" --> outside a loaded block"  1 BLK +! 0 >IN ! ; IMMEDIATE
 : ;S ( -- ) \ interpreting: stop loading this block; compiling: EXIT (fig)
@@ -152,4 +154,4 @@ VARIABLE SCR  ( -- a ) \ the block last listed (the editor's block)
    DUP BLOCK DROP DUP SCR ! CR ." Block " DUP U.
    16 0 DO CR I 2 U.R SPACE DUP BLOCK I 64 * + .LINE LOOP DROP CR ;
 : INDEX ( blk1 blk2 -- ) \ the first line of each block blk1..blk2
-   1+ SWAP ?DO CR I 5 U.R SPACE I BLOCK .LINE LOOP CR ;
+   BLOCK-RANGE ?DO CR I 5 U.R SPACE I BLOCK .LINE LOOP CR ;

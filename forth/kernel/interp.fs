@@ -27,7 +27,7 @@
     >R 2SWAP BASE @ UD* R> 0 D+ 2SWAP 1 /STRING
   REPEAT THEN ;
 : NUMBER?  ( a u -- n true | a u false )
-  2DUP BASE @ >R
+  ?BASE 2DUP BASE @ >R
   DUP 1 > IF 2DUP + 1- C@ UPC [CHAR] O = IF 1- 8 BASE ! THEN THEN
   OVER C@ [CHAR] - = DUP >R IF 1 /STRING THEN
   DUP IF 0 0 2SWAP >NUMBER NIP ELSE 2DROP 0 0 1 THEN
@@ -76,10 +76,24 @@
 : AGAIN  ( dest -- )  ['] BRANCH , <RESOLVE ;  IMMEDIATE COMPILE-ONLY
 : WHILE  ( dest -- orig dest )  ['] ?BRANCH , >MARK 2SWAP ;  IMMEDIATE COMPILE-ONLY
 : REPEAT  ( orig dest -- )  ['] BRANCH , <RESOLVE >RESOLVE ;  IMMEDIATE COMPILE-ONLY
-: DO  ( -- do-sys )  ['] (DO) , HERE 0 , 3 ;  IMMEDIATE COMPILE-ONLY
-: ?DO  ( -- do-sys )  ['] (?DO) , HERE 0 , 3 ;  IMMEDIATE COMPILE-ONLY
-: LOOP  ( do-sys -- )  3 ?PAIRS ['] (LOOP) , DUP 2+ , HERE SWAP ! ;  IMMEDIATE COMPILE-ONLY
-: +LOOP  ( do-sys -- )  3 ?PAIRS ['] (+LOOP) , DUP 2+ , HERE SWAP ! ;  IMMEDIATE COMPILE-ONLY
+\ EXIT inside a DO loop would return to its loop parameters, LEAVE and UNLOOP
+\ outside one to whatever the return stack holds: refused when compiled.
+VARIABLE DO-DEPTH  ( -- a ) \ DO loops open in the code being compiled
+VARIABLE UNLOOPS  ( -- a ) \ UNLOOPs compiled since the last EXIT
+: NO-LOOPS  ( -- )  0 DO-DEPTH !  0 UNLOOPS ! ;
+: ?UNLOOPED  ( xt -- xt )
+  DUP ['] LEAVE = OVER ['] UNLOOP = OR DO-DEPTH @ 0= AND
+  ABORT" LEAVE or UNLOOP outside DO ... LOOP"
+  DUP ['] UNLOOP = IF 1 UNLOOPS +! THEN
+  DUP ['] EXIT = IF  UNLOOPS @ DO-DEPTH @ <
+    ABORT" EXIT inside DO ... LOOP needs UNLOOP first"  0 UNLOOPS !  THEN ;
+: COMPILE,  ( xt -- )  ?UNLOOPED , ;
+: DO  ( -- do-sys )  ['] (DO) , HERE 0 , 3  1 DO-DEPTH +! ;  IMMEDIATE COMPILE-ONLY
+: ?DO  ( -- do-sys )  ['] (?DO) , HERE 0 , 3  1 DO-DEPTH +! ;  IMMEDIATE COMPILE-ONLY
+: LOOP-END  ( do-sys xt -- )  \ LOOP and +LOOP
+  , 3 ?PAIRS DUP 2+ , HERE SWAP !  -1 DO-DEPTH +! ;
+: LOOP  ( do-sys -- )  ['] (LOOP) LOOP-END ;  IMMEDIATE COMPILE-ONLY
+: +LOOP  ( do-sys -- )  ['] (+LOOP) LOOP-END ;  IMMEDIATE COMPILE-ONLY
 : ,"  ( "ccc"" -- )  [CHAR] " PARSE DUP C, HERE OVER ALLOT SWAP CMOVE ALIGN ;
 : ."  ( "ccc"" -- )  ['] (.") , ," ;  IMMEDIATE COMPILE-ONLY
 : ABORT"  ( "ccc"" -- )  ['] (ABORT") , ," ;  IMMEDIATE COMPILE-ONLY
@@ -131,9 +145,9 @@ DODOES CONSTANT 'DODOES  ( -- a )
 : TO  ( x "name" -- )
   TICK >BODY STATE @ IF POSTPONE LITERAL ['] ! , ELSE ! THEN ;  IMMEDIATE
 : :  ( "name" -- colon-sys )  \ also ends an open CODE word (block 1008)
-  ?END-CODE  CURRENT @ CONTEXT !  ALIGN HERE COLON-LFA !
+  ?END-CODE  CURRENT @ CONTEXT !  NO-LOOPS  ALIGN HERE COLON-LFA !
   PARSE-NAME HEADER, SMUDGE  'DOCOL JSR-IP CF,  4 ] ;
-: :NONAME  ( -- xt colon-sys )  0 COLON-LFA !  ALIGN HERE 'DOCOL JSR-IP CF, 4 ] ;
+: :NONAME  ( -- xt colon-sys )  0 COLON-LFA !  NO-LOOPS  ALIGN HERE 'DOCOL JSR-IP CF, 4 ] ;
 : ;  ( colon-sys -- )
   ['] EXIT ,  4 ?PAIRS  COLON-LFA @ IF REVEAL THEN  0 COLON-LFA !  POSTPONE [ ;
   IMMEDIATE COMPILE-ONLY

@@ -17,7 +17,12 @@ CODE EXIT  ( -- ) ( R: ip -- )  IP RP )+ MOV,  NEXT,  END-CODE  COMPILE-ONLY
 CODE (LIT)  ( -- x )  S -) IP )+ MOV,  NEXT,  END-CODE
 CODE BRANCH  ( -- )  BRANCH,  END-CODE
 CODE ?BRANCH  ( f -- )  S )+ TST,  EQ IF,  BRANCH,  THEN,  IP )+ TST,  NEXT,  END-CODE
-CODE EXECUTE  ( xt -- )  R0 S )+ MOV,  R0 ) JMP,  END-CODE
+\ EXECUTE checks what it jumps to: on an empty stack it would run a stale cell,
+\ and an odd xt would run from the even address below (the 11/23 has no
+\ odd-address trap)
+CODE EXECUTE  ( xt -- )
+  S0 # S CMP,  HIS IF,  -4 THROW,  THEN,  R0 S ) MOV,  ?ODD,  S 2 # ADD,  R0 ) JMP,
+  END-CODE
 
 \ DO loops. Return stack: leave address, bias = 100000-limit, index+bias.
 \ Adding to index+bias overflows (V) exactly when the index crosses the
@@ -56,7 +61,8 @@ CODE 2SWAP  ( a b c d -- c d a b )
   R0 S ) MOV,  S ) 4 S I) MOV,  4 S I) R0 MOV,
   R0 2 S I) MOV,  2 S I) 6 S I) MOV,  6 S I) R0 MOV,  NEXT,  END-CODE
 CODE 2OVER  ( a b c d -- a b c d a b )  S -) 6 S I) MOV,  S -) 6 S I) MOV,  NEXT,  END-CODE
-CODE PICK  ( xu .. x0 u -- xu .. x0 xu )
+CODE PICK  ( xu .. x0 u -- xu .. x0 xu )  \ u beyond the stack: error -4
+  T S0 2 - # MOV,  T S SUB,  T ASR,  T S ) CMP,  HIS IF,  -4 THROW,  THEN,
   R0 S ) MOV,  R0 R0 ADD,  R0 S ADD,  S ) 2 R0 I) MOV,  NEXT,  END-CODE
 CODE >R  ( x -- ) ( R: -- x )  RP -) S )+ MOV,  NEXT,  END-CODE  COMPILE-ONLY
 CODE R>  ( -- x ) ( R: x -- )  S -) RP )+ MOV,  NEXT,  END-CODE  COMPILE-ONLY
@@ -155,6 +161,12 @@ CODE CMOVE>  ( src dst n -- )
 CODE FILL  ( a n c -- )
   R0 S )+ MOV,  T S )+ MOV,  W S )+ MOV,
   T TST,  NE IF,  BEGIN,  W )+ R0 MOVB,  T DEC,  EQ UNTIL,  THEN,  NEXT,  END-CODE
+
+\ (BELOW): a chain runs from the newest header down, so the headers above an
+\ address are skipped with one comparison each (WORD-AT, trap reports)
+CODE (BELOW)  ( a lfa -- a lfa' )  \ the chain's first header at or below a
+  R0 S ) MOV,  BEGIN,  2 S I) R0 CMP,  HI WHILE,  R0 R0 ) MOV,  REPEAT,  S ) R0 MOV,
+  NEXT,  END-CODE
 
 \ parsing helpers: with a blank delimiter any control character is a blank
 CODE SCAN  ( a u c -- a' u' )  \ first c, or the end

@@ -7,22 +7,27 @@ VARIABLE 'ON-ERROR  ( -- a ) \ xt run after every error (0 = none)
   SP@ S0 U> IF -4 THROW THEN  SP@ S-LIMIT 16 + U< IF -3 THROW THEN ;
 \ Control structures typed at the terminal (0 3 DO I . -1 +LOOP): an opening
 \ IF BEGIN DO ?DO in interpret state starts a temporary definition at HERE;
-\ when the structure closes it is run and HERE is put back.
+\ when the structure closes it runs with HERE above it (PAD, the pictured
+\ number buffer and WORD's buffer must not overwrite it), then HERE is put back.
 VARIABLE TEMP-DEPTH  ( -- a ) \ depth+1 when it started, 0 = none
 VARIABLE TEMP-START  ( -- a )
+VARIABLE TEMP-END  ( -- a ) \ HERE above the code while it runs, 0 = none runs
 : OPENER?  ( xt -- xt f )
   DUP ['] IF = OVER ['] BEGIN = OR OVER ['] DO = OR OVER ['] ?DO = OR ;
 : TEMP-BEGIN  ( xt -- xt )  \ xt is still on the stack: DEPTH counts it (the +1)
   HERE TEMP-START !  'DOCOL JSR-IP CF,  DEPTH TEMP-DEPTH !  ] ;
+: TEMP-FORGET  ( -- )  \ unless what it ran allotted or defined something
+  TEMP-END @ IF TEMP-END @ HERE = IF TEMP-START @ DP ! THEN 0 TEMP-END ! THEN ;
 : TEMP-END?  ( -- )  \ structure closed: run it, forget it
   TEMP-DEPTH @ IF DEPTH 1+ TEMP-DEPTH @ = IF
-    ['] EXIT ,  POSTPONE [  0 TEMP-DEPTH !  TEMP-START @ DUP DP ! EXECUTE
+    ['] EXIT ,  POSTPONE [  0 TEMP-DEPTH !  HERE TEMP-END !  TEMP-START @ EXECUTE
+    TEMP-FORGET
   THEN THEN ;
 : INTERPRET  ( -- )
   BEGIN PARSE-NAME DUP WHILE
     2DUP WHAT 2!  2DUP SEARCH-NAME ?DUP IF
       NIP NIP DUP NAME> SWAP C@
-      STATE @ IF 128 AND IF EXECUTE ELSE , THEN
+      STATE @ IF 128 AND IF EXECUTE ELSE COMPILE, THEN
       ELSE 64 AND IF OPENER? 0= IF -14 THROW THEN TEMP-BEGIN THEN EXECUTE THEN
     ELSE NUMBER? IF STATE @ IF POSTPONE LITERAL THEN ELSE -13 THROW THEN THEN
     ?STACK TEMP-END?
@@ -34,33 +39,34 @@ VARIABLE TEMP-START  ( -- a )
 
 \ ---- reverse lookup: which word holds an address -----------------------------------
 VARIABLE BEST  ( -- a )
-: BEST-IN  ( addr lfa -- addr )  \ one chain: keep the best header in BEST
-  BEGIN ?DUP WHILE
-    DUP 2+ NAME> 2 PICK SWAP U< 0= IF
-      DUP 2+ NAME> BEST @ ?DUP IF NAME> U> ELSE DROP TRUE THEN
-      IF DUP 2+ BEST ! THEN
-    THEN @
-  REPEAT ;
+: BEST-IN  ( addr lfa -- addr )  \ one chain, newest first: its first header
+  BEGIN (BELOW) DUP WHILE      \ whose code starts at or below addr; keep the best
+    DUP 2+ NAME> 2 PICK U> 0= IF  DUP 2+ BEST @ UMAX BEST !  DROP EXIT  THEN  @
+  REPEAT DROP ;
 : WORD-AT  ( addr -- nfa | 0 )  \ the word whose code or body holds addr
-  0 BEST !  VOC-LINK @ BEGIN ?DUP WHILE
+  0 BEST !  DUP HERE U< IF VOC-LINK @ BEGIN ?DUP WHILE   \ nothing at or above HERE
     4 0 DO DUP 8 - I 2* + @ ROT SWAP BEST-IN SWAP LOOP @
-  REPEAT DROP BEST @ ;
+  REPEAT THEN DROP BEST @ ;
 : >NAME  ( xt -- nfa | 0 )  DUP WORD-AT DUP IF TUCK NAME> <> IF DROP 0 THEN ELSE NIP THEN ;
 : .NAME  ( nfa -- )  COUNT 31 AND TYPE ;
 : .OCTAL  ( u -- )  BASE @ >R 8 BASE ! 0 <# # # # # # # #> TYPE R> BASE ! ;
 
 \ ---- error reports -------------------------------------------------------------
 VARIABLE DISARMED  ( -- a ) \ vector DISARM put back, -1 = none
-: DISARM  ( -- )  \ an interrupt handler that trapped leaves its vector
-  -1 DISARMED !  TRAP-PC @ WORD-AT ?DUP 0= IF EXIT THEN
-  1000O 0 DO
-    I @ WORD-AT OVER = IF STUBS I + I !  I DISARMED ! THEN
+VARIABLE TRAP-SEEN  ( -- a ) \ vector of the trap being reported, -1 = none
+VARIABLE TRAP-WORD  ( -- a ) \ the word holding its PC, 0 = none
+: DISARM  ( -- )  \ THROW -256: take over what TRAPPED recorded, if anything;
+  -1 DISARMED !  0 TRAP-WORD !  TRAP-VEC @ TRAP-SEEN !  -1 TRAP-VEC !
+  TRAP-SEEN @ 0< IF EXIT THEN  \ an interrupt handler that trapped leaves its vector
+  TRAP-PC @ WORD-AT DUP TRAP-WORD !  ?DUP 0= IF EXIT THEN
+  1000O 0 DO  \ only vectors something was installed in: a lookup each
+    I @ STUBS I + <> IF I @ WORD-AT OVER = IF STUBS I + I !  I DISARMED ! THEN THEN
   4 +LOOP DROP ;
 : .DISARMED  ( -- )
   DISARMED @ DUP 0< IF DROP EXIT THEN
   ." ; vector " .OCTAL ."  restored to its default handler"  -1 DISARMED ! ;
 : .TRAP  ( -- )  \ what the last unexpected trap was, and where
-  TRAP-VEC @ DUP 4 = IF ." bus error or odd address" ELSE
+  TRAP-SEEN @ DUP 4 = IF ." bus error or odd address" ELSE
     DUP 10O = IF ." illegal or reserved instruction" ELSE
     DUP 14O = IF ." breakpoint trap (BPT)" ELSE
     DUP 20O = IF ." IOT trap" ELSE
@@ -68,8 +74,8 @@ VARIABLE DISARMED  ( -- a ) \ vector DISARM put back, -1 = none
     DUP 34O = IF ." TRAP instruction" ELSE
     DUP 24O = IF ." power fail" ELSE
     ." unexpected interrupt" THEN THEN THEN THEN THEN THEN THEN
-  ."  (vector " .OCTAL ." , PC " TRAP-PC @ DUP .OCTAL
-  WORD-AT ?DUP IF ."  in " .NAME THEN  .DISARMED ." )" ;
+  ."  (vector " .OCTAL ." , PC " TRAP-PC @ .OCTAL
+  TRAP-WORD @ ?DUP IF ."  in " .NAME THEN  .DISARMED ." )" ;
 : .ERROR-TEXT  ( code -- )
   DUP -1 = IF DROP ." aborted" EXIT THEN
   DUP -2 = IF DROP ABORT-MSG @ COUNT TYPE EXIT THEN
@@ -83,36 +89,42 @@ VARIABLE DISARMED  ( -- a ) \ vector DISARM put back, -1 = none
   DUP -14 = IF DROP ." compile-only word interpreted" EXIT THEN
   DUP -15 = IF DROP ." cannot forget kernel words" EXIT THEN
   DUP -16 = IF DROP ." name expected" EXIT THEN
+  DUP -17 = IF DROP ." pictured numeric output too long" EXIT THEN
   DUP -19 = IF DROP ." name longer than 31 characters" EXIT THEN
   DUP -22 = IF DROP ." unbalanced control structure" EXIT THEN
+  DUP -24 = IF DROP ." BASE outside 2..36 (now DECIMAL)" EXIT THEN
   DUP -23 = IF DROP ." odd address for a word access" EXIT THEN
   DUP -28 = IF DROP ." interrupted by ^C" EXIT THEN
   DUP -33 = IF DROP ." block read error" EXIT THEN
   DUP -34 = IF DROP ." block write error" EXIT THEN
   DUP -35 = IF DROP ." no such block" EXIT THEN
-  DUP -256 = IF DROP .TRAP EXIT THEN
-  ." error " . ;
+  DUP -256 = TRAP-SEEN @ 0< 0= AND IF DROP .TRAP EXIT THEN
+  ." error " 0 .R ;
 : .ERROR  ( code -- )  \ Error: what: word [in block b line l]
-  CR ." Error: " .ERROR-TEXT  ." : " WHAT 2@ TYPE
+  CR ." Error: " .ERROR-TEXT  WHAT 2@ ?DUP IF ." : " TYPE ELSE DROP THEN
   BLK @ IF ."  in block " BLK @ . ." line " >IN @ 1- 0 MAX 64 / . THEN CR ;
 : UNLINK  ( lfa -- )  \ the newest header of CURRENT leaves, HERE goes back to it
   DUP @ OVER 2+ C@ CURRENT @ SWAP CHAIN !  DP !  CURRENT @ NEWEST 2+ LAST ! ;
 : DISCARD-DEFINITION  ( -- )  \ a definition cut short leaves nothing behind
   STATE @ IF COLON-LFA @ ?DUP IF UNLINK THEN THEN
-  0 COLON-LFA !  TEMP-DEPTH @ IF TEMP-START @ DP !  0 TEMP-DEPTH ! THEN ;
+  0 COLON-LFA !  NO-LOOPS  TEMP-DEPTH @ IF TEMP-START @ DP !  0 TEMP-DEPTH ! THEN  TEMP-FORGET ;
+: CLEAR-STACK  ( -- )  \ empty, and the slack below S0 zeroed: a word run on an
+  S0 SP!  S0 16 ERASE ;  \ empty stack finds 0 (no address, no count) there
 : RESET-AFTER-ERROR  ( -- )
   DISCARD-DEFINITION  POSTPONE [  0 BLK !  0 SOURCE-ID !  CURRENT @ CONTEXT !
-  'ON-ERROR @ ?DUP IF EXECUTE THEN  S0 SP!  0 PRIORITY! ;
+  'ON-ERROR @ ?DUP IF EXECUTE THEN  0 PRIORITY! ;
 
 \ ---- QUIT --------------------------------------------------------------------------
 : .LOST  ( -- )  \ say so when the console ring overflowed
   RXLOST @ ?DUP IF CR U. ." characters lost: typed too far ahead" CR  0 RXLOST ! THEN ;
 : QUERY  ( -- )  \ a line from the terminal becomes the source
-  TIB TIB-SIZE 1- ACCEPT  TIB SWAP SRC 2!  0 >IN !  0 BLK !  0 SOURCE-ID !  SPACE .LOST ;
+  0 0 WHAT 2!  TIB TIB-SIZE 1- ACCEPT  TIB SWAP SRC 2!  0 >IN !  0 BLK !  0 SOURCE-ID !  SPACE .LOST ;
 : INTERPRET-LINE  ( -- )  QUERY INTERPRET ;
-: QUIT  ( -- )  \ read, interpret, report: forever
-  RP0 RP!  0 HANDLER !  POSTPONE [  0 BLK !  0 PRIORITY!
-  BEGIN
-    ['] INTERPRET-LINE CATCH ?DUP IF .ERROR RESET-AFTER-ERROR ELSE ."  ok" CR THEN
-  AGAIN ;
-: WARM  ( -- )  S0 SP! QUIT ;  \ THROW with no CATCH frame comes here
+: .PROMPT  ( -- )  \ gforth's: an open definition or structure says so
+  STATE @ IF ."  compiled" ELSE ."  ok" THEN CR ;
+: ABORT-TO-QUIT  ( code -- )  \ THROW with no CATCH frame, return stack emptied:
+  >R CLEAR-STACK  BASE @ 2 37 WITHIN 0= IF DECIMAL THEN  \ a sane stack and BASE
+  R> .ERROR  RESET-AFTER-ERROR  QUIT ;                   \ for the report
+: QUIT  ( -- )  \ read, interpret: forever. An error is a THROW with no CATCH
+  RP0 RP!  0 HANDLER !  POSTPONE [  0 BLK !  0 PRIORITY!   \ frame: it reports,
+  BEGIN INTERPRET-LINE .PROMPT AGAIN ;                     \ resets, QUITs again
