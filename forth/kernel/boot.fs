@@ -15,9 +15,8 @@
 \ and the interpreter's error path entered with -256 THROW, still at priority 7:
 \ THROW first takes a handler that trapped out of its vector (DISARM), then
 \ lowers the priority. The return stack restarts at the innermost CATCH frame
-\ (THROW goes there anyway): a trap caused by a wild RP (0 RP!) is reported too.
-LABEL TRAPPED  \ first kernel mode, priority 7: a trap pushed on a wild stack can
-  177776O @# 340O # MOV,  \ have written its JSR's R0 into the PSW at 177776
+\ (THROW goes there anyway): the report does not depend on a sane RP.
+LABEL TRAPPED
   R0 STUBS 4 + # SUB,  TRAP-VEC @# R0 MOV,
   RP )+ TST,  TRAP-PC @# RP )+ MOV,
   RP ' HANDLER >BODY @# MOV,  EQ IF,  RP RP0 # MOV,  THEN,

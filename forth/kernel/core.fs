@@ -46,7 +46,7 @@ VARIABLE WARNING  ( -- a )
 : */  ( a b c -- quot )  */MOD NIP ;
 : ROLL  ( xu .. x0 u -- xu-1 .. x0 xu )  \ u beyond the stack: error -4
   DUP DEPTH 2 - U< 0= IF -4 THROW THEN
-  DUP 1+ PICK >R  SP@ 2+ DUP 2+ ROT 2* CMOVE>  2DROP R> ;
+  DUP 1+ PICK >R  SP@ 2+ DUP 2+ ROT 2* CMOVE>  DROP R> ;
 : WITHIN  ( x lo hi -- f )  OVER - >R - R> U< ;
 : CELL+  ( a -- a+2 )  2+ ;
 : CELLS  ( n -- 2n )  2* ;

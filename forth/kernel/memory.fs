@@ -19,5 +19,5 @@
      256  EQU TIB-SIZE
   156000O EQU S-LIMIT     \ 156000-156757 data stack (grows down from S0)
   156760O EQU S0          \ 156760-156777 slack below the return stack
-  157000O EQU R-LIMIT     \ 157000-157777 return stack = hardware stack
-  160000O EQU RP0
+  157000O EQU R-LIMIT     \ 157000-157775 return stack = hardware stack
+  157776O EQU RP0         \ empty; the cell here holds RS-GUARD (an EXIT too many)

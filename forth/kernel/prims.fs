@@ -72,9 +72,12 @@ CODE 2>R  ( a b -- ) ( R: -- a b )  RP -) 2 S I) MOV,  RP -) S ) MOV,  S 4 # ADD
 CODE 2R>  ( -- a b ) ( R: a b -- )  S -) 2 RP I) MOV,  S -) RP ) MOV,  RP 4 # ADD,  NEXT,
   END-CODE  COMPILE-ONLY
 CODE SP@  ( -- a )  R0 S MOV,  S -) R0 MOV,  NEXT,  END-CODE
-CODE SP!  ( a -- )  S S ) MOV,  NEXT,  END-CODE
+\ SP! and RP! refuse a pointer outside their stack (error -9), which would
+\ make the next push write the PSW or a bus error push on no memory
+CODE SP!  ( a -- )  R0 S ) MOV,  ?ODD,  S-LIMIT S0 ?WITHIN,  S R0 MOV,  NEXT,  END-CODE
 CODE RP@  ( -- a )  S -) RP MOV,  NEXT,  END-CODE
-CODE RP!  ( a -- )  RP S )+ MOV,  NEXT,  END-CODE
+CODE RP!  ( a -- )
+  R0 S ) MOV,  ?ODD,  R-LIMIT 40 + RP0 ?WITHIN,  S 2 # ADD,  RP R0 MOV,  NEXT,  END-CODE
 CODE DEPTH  ( -- n )  R0 S0 # MOV,  R0 S SUB,  R0 ASR,  S -) R0 MOV,  NEXT,  END-CODE
 
 \ arithmetic and logic

@@ -82,6 +82,7 @@ VARIABLE TRAP-WORD  ( -- a ) \ the word holding its PC, 0 = none
   DUP -3 = IF DROP ." stack overflow" EXIT THEN
   DUP -4 = IF DROP ." stack underflow" EXIT THEN
   DUP -5 = IF DROP ." return stack overflow" EXIT THEN
+  DUP -6 = IF DROP ." return stack underflow" EXIT THEN
   DUP -8 = IF DROP ." dictionary full" EXIT THEN
   DUP -9 = IF DROP ." invalid memory address" EXIT THEN
   DUP -10 = IF DROP ." division by zero" EXIT THEN
@@ -122,9 +123,14 @@ VARIABLE TRAP-WORD  ( -- a ) \ the word holding its PC, 0 = none
 : INTERPRET-LINE  ( -- )  QUERY INTERPRET ;
 : .PROMPT  ( -- )  \ gforth's: an open definition or structure says so
   STATE @ IF ."  compiled" ELSE ."  ok" THEN CR ;
+\ The cell at RP0 holds RS-GUARD, a thread of one word: an EXIT with the return
+\ stack empty (RP0 RP!) runs it instead of popping the I/O page. No push: the
+\ guard cell stays intact.
+CODE RS-EMPTY  ( -- )  RP RP0 # MOV,  S -) CLR,  -6 THROW,  END-CODE
+CREATE RS-GUARD  ( -- a )  ' RS-EMPTY ,
 : ABORT-TO-QUIT  ( code -- )  \ THROW with no CATCH frame, return stack emptied:
   >R CLEAR-STACK  BASE @ 2 37 WITHIN 0= IF DECIMAL THEN  \ a sane stack and BASE
   R> .ERROR  RESET-AFTER-ERROR  QUIT ;                   \ for the report
 : QUIT  ( -- )  \ read, interpret: forever. An error is a THROW with no CATCH
-  RP0 RP!  0 HANDLER !  POSTPONE [  0 BLK !  0 PRIORITY!   \ frame: it reports,
+  RS-GUARD RP0 !  RP0 RP!  0 HANDLER !  POSTPONE [  0 BLK !  0 PRIORITY!   \ frame: it reports,
   BEGIN INTERPRET-LINE .PROMPT AGAIN ;                     \ resets, QUITs again

@@ -30,6 +30,9 @@
 \ a word access at an odd address: the 11/23 (F-11) would silently use the even
 \ address below, so @ ! and friends check and report error -23 themselves
 : ?ODD, ( -- )  R0 1 # BIT,  NE IF,  -23 THROW,  THEN, ;
+\ R0 = the cell on top of the stack; error -9 unless lo <= R0 <= hi (unsigned)
+: ?WITHIN, ( lo hi -- )
+  over - >r >r  T R0 MOV,  T r> # SUB,  r> # T CMP,  HI IF,  -9 THROW,  THEN, ;
 \ take a branch; every loop passes here, so a runaway push loop is caught
 \ (error -3) before the data stack runs over the buffers and the dictionary
 : BRANCH, ( -- )
