@@ -18,7 +18,8 @@ and the plant trace are the same on every run and every host.
         m.simh("show plant")           # a SIMH command's output
 
 A line that does not reach the next prompt within `line_limit` simulated seconds
-(SIMH `STEP`) is stopped and reported. Addresses come from build/kernel.map.
+(SIMH `STEP`) is stopped and reported; `interrupt()` then types ^C, which the
+FORTH's receive interrupt takes at once. Addresses come from build/kernel.map.
 """
 import contextlib
 import re
@@ -122,6 +123,7 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         self.child.delaybeforesend = None
         self._expect_prompt("the boot script")
         self.rate = self._clock_rate()
+        self._head = None       # the ring's index after a line that reached QUERY
         self.trace = trace
         self.boot_output = self._run("go", "boot").output
 
@@ -138,6 +140,7 @@ class ScriptedMachine(contextlib.AbstractContextManager):
 
     def simh(self, command):
         """Run one SIMH command at the prompt; its output (CR LF as printed)."""
+        self._head = None       # the command may change the ring: read it again
         self.child.send(command + "\r")
         return self._expect_prompt(command)
 
@@ -180,21 +183,40 @@ class ScriptedMachine(contextlib.AbstractContextManager):
             raise ScriptError(f"line longer than {self.max_line} characters")
         if any(not (32 <= ord(c) < 127 or c == "\t") for c in text):
             raise ScriptError("line holds a control or non-ASCII character")
+        head = self._ring_head()
+        self._feed.write_text("\n".join(feed_commands(self.sym, text, head)) + "\n")
+        limit = self.line_limit if limit is None else limit
+        answer = self._run(f"do {self._feed}\rstep {self._steps(limit)}",
+                           text, extra_prompts=1)
+        if not answer.stopped:   # back at QUERY: ACCEPT took the line and its CR
+            self._head = (head + len(text) + 1) & self.sym["RING-MASK"]
+        return self._limited(answer, limit)
+
+    def _ring_head(self):
+        """Where the next line goes: known after a line that reached QUERY (no
+        other input arrives in a scripted run), otherwise read and checked."""
+        if self._head is not None:
+            return self._head
         found = dict(EXAMINED.findall(self.simh(
             f"examine {self.sym['RXHEAD']:o}:{self.sym['RXTAIL']:o}")))
         head = int(found[f"{self.sym['RXHEAD']:o}"], 8)
         if head != int(found[f"{self.sym['RXTAIL']:o}"], 8):
             raise ScriptError("the console ring is not empty at the prompt")
-        self._feed.write_text("\n".join(feed_commands(self.sym, text, head)) + "\n")
-        limit = self.line_limit if limit is None else limit
-        answer = self._run(f"do {self._feed}\rstep {self._steps(limit)}",
-                           text, extra_prompts=1)
-        return self._limited(answer, limit)
+        return head
+
+    def interrupt(self, limit=None):
+        """Type ^C to a line that is still running (the DL11 receiver's buffer,
+        done flag and interrupt request, as a key press sets them) and run on to
+        the next prompt, or for `limit` simulated seconds."""
+        for command in ("deposit tti buf 3", "deposit tti done 1", "deposit tti int 1"):
+            self.simh(command)
+        return self.resume(limit)
 
     def resume(self, limit=None):
         """Let a line that is still running go on to the next prompt (or for
         `limit` simulated seconds more)."""
         limit = self.line_limit if limit is None else limit
+        self._head = None
         return self._limited(self._run(f"step {self._steps(limit)}", "resume"), limit)
 
     @staticmethod
@@ -206,6 +228,7 @@ class ScriptedMachine(contextlib.AbstractContextManager):
 
     def wait(self, seconds):
         """Let `seconds` of simulated time pass with no input; the output."""
+        self._head = None
         answer = self._run(f"step {self._steps(seconds)}", f"#wait {seconds}")
         if answer.stopped == "step":
             answer.stopped = ""
