@@ -141,8 +141,7 @@ class LineMaker:
             text = r.choice(["1 2 3 10 ROLL", "1 2 3 10 PICK", "PICK", "ROLL", "-1 PICK",
                              "<# 100 0 DO 65 HOLD LOOP", "<# #S #>", "0 0 <# #S #> TYPE"])
         elif kind < 0.90:
-            text = self.body(0, r.randint(1, 4)) + " " + r.choice(["THEN", "LOOP", ";", "ELSE",
-                                                                    "WHILE", "+LOOP"])
+            text = self.body(0, r.randint(1, 4)) + " " + r.choice(["THEN", "LOOP", ";", "ELSE"])
         elif kind < 0.95:
             text = " ".join(self.undefined() for _ in range(r.randint(1, 4)))
         else:

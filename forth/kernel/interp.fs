@@ -63,7 +63,12 @@
 : LITERAL  ( n -- )  ['] (LIT) , , ;  IMMEDIATE COMPILE-ONLY
 : [  ( -- )  FALSE STATE ! ;  IMMEDIATE
 : ]  ( -- )  TRUE STATE ! ;
-: >MARK  ( -- orig 1 )  HERE 0 , 1 ;
+\ A forward branch points at (NOWHERE) until it is resolved: code run with one
+\ left open (a typed structure closed early by a LITERAL eating its tag, a
+\ definition patched with [ DROP ]) stops with error -22 instead of jumping to 0.
+: UNRESOLVED  ( -- )  -22 THROW ;
+CREATE (NOWHERE)  ( -- a )  ' UNRESOLVED ,
+: >MARK  ( -- orig 1 )  HERE (NOWHERE) , 1 ;
 : >RESOLVE  ( orig 1 -- )  1 ?PAIRS HERE SWAP ! ;
 : <MARK  ( -- dest 2 )  HERE 2 ;
 : <RESOLVE  ( dest 2 -- )  2 ?PAIRS , ;
@@ -88,8 +93,8 @@ VARIABLE UNLOOPS  ( -- a ) \ UNLOOPs compiled since the last EXIT
   DUP ['] EXIT = IF  UNLOOPS @ DO-DEPTH @ <
     ABORT" EXIT inside DO ... LOOP needs UNLOOP first"  0 UNLOOPS !  THEN ;
 : COMPILE,  ( xt -- )  ?UNLOOPED , ;
-: DO  ( -- do-sys )  ['] (DO) , HERE 0 , 3  1 DO-DEPTH +! ;  IMMEDIATE COMPILE-ONLY
-: ?DO  ( -- do-sys )  ['] (?DO) , HERE 0 , 3  1 DO-DEPTH +! ;  IMMEDIATE COMPILE-ONLY
+: DO  ( -- do-sys )  ['] (DO) , HERE (NOWHERE) , 3  1 DO-DEPTH +! ;  IMMEDIATE COMPILE-ONLY
+: ?DO  ( -- do-sys )  ['] (?DO) , HERE (NOWHERE) , 3  1 DO-DEPTH +! ;  IMMEDIATE COMPILE-ONLY
 : LOOP-END  ( do-sys xt -- )  \ LOOP and +LOOP
   , 3 ?PAIRS DUP 2+ , HERE SWAP !  -1 DO-DEPTH +! ;
 : LOOP  ( do-sys -- )  ['] (LOOP) LOOP-END ;  IMMEDIATE COMPILE-ONLY

@@ -18,8 +18,8 @@ VARIABLE TEMP-END  ( -- a ) \ HERE above the code while it runs, 0 = none runs
   HERE TEMP-START !  'DOCOL JSR-IP CF,  DEPTH TEMP-DEPTH !  ] ;
 : TEMP-FORGET  ( -- )  \ unless what it ran allotted or defined something
   TEMP-END @ IF TEMP-END @ HERE = IF TEMP-START @ DP ! THEN 0 TEMP-END ! THEN ;
-: TEMP-END?  ( -- )  \ structure closed: run it, forget it
-  TEMP-DEPTH @ IF DEPTH 1+ TEMP-DEPTH @ = IF
+: TEMP-END?  ( -- )  \ structure closed (by a word compiling): run it, forget it
+  TEMP-DEPTH @ STATE @ AND IF DEPTH 1+ TEMP-DEPTH @ = IF
     ['] EXIT ,  POSTPONE [  0 TEMP-DEPTH !  HERE TEMP-END !  TEMP-START @ EXECUTE
     TEMP-FORGET
   THEN THEN ;
@@ -122,7 +122,7 @@ VARIABLE TRAP-WORD  ( -- a ) \ the word holding its PC, 0 = none
   0 0 WHAT 2!  TIB TIB-SIZE 1- ACCEPT  TIB SWAP SRC 2!  0 >IN !  0 BLK !  0 SOURCE-ID !  SPACE .LOST ;
 : INTERPRET-LINE  ( -- )  QUERY INTERPRET ;
 : .PROMPT  ( -- )  \ gforth's: an open definition or structure says so
-  STATE @ IF ."  compiled" ELSE ."  ok" THEN CR ;
+  STATE @ TEMP-DEPTH @ OR IF ."  compiled" ELSE ."  ok" THEN CR ;
 \ The cell at RP0 holds RS-GUARD, a thread of one word: an EXIT with the return
 \ stack empty (RP0 RP!) runs it instead of popping the I/O page. No push: the
 \ guard cell stays intact.
