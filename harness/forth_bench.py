@@ -50,6 +50,8 @@ CREATE FLAGS SIZE ALLOT
 CREATE TEXT 448 ALLOT
 : TEXT! ( -- ) 64 0 DO S" 1 DROP " TEXT I 7 * + SWAP MOVE LOOP ;
 : B-INTERPRET QUIET TEXT! MARK TEXT 448 EVALUATE END-MARK LOUD ;
+: BUS-ERROR 160000O @ ;
+: B-TRAP QUIET MARK ['] BUS-ERROR CATCH DROP END-MARK LOUD ;
 """
 
 TIME = re.compile(r"Time:\s+(\d+)")
@@ -104,6 +106,7 @@ def main():
             ("10 000 empty DO LOOP passes", "B-LOOP"),
             ("recursive Fibonacci of 20", "B-FIB"),
             ("outer interpreter: EVALUATE of 64 x '1 DROP'", "B-INTERPRET"),
+            ("bus error trapped and caught by CATCH", "B-TRAP"),
         ]:
             n = count(m, word)
             rows.append((name, n - empty))
