@@ -14,6 +14,7 @@ from pathlib import Path
 
 import pexpect
 
+from harness.console_halt import HaltWatcher, kernel_entry
 from harness.simh import MACHINE_INI
 
 KERNEL = Path(__file__).resolve().parent.parent / "build" / "kernel.lda"
@@ -123,7 +124,9 @@ def session(simulator, disk, trace=None, fast=False):
         child.delaybeforesend = None
         watcher = LineWatcher()
         try:
-            child.interact(escape_character=None, input_filter=watcher.feed)
+            halts = HaltWatcher(KERNEL, kernel_entry(KERNEL.with_suffix(".map")) or 0)
+            child.interact(escape_character=None, input_filter=watcher.feed,
+                           output_filter=halts.feed)
         except Leave:
             flushed = leave(child, trace)
             say(("blocks flushed; " if flushed else "") + f"disk {disk} detached. Bye.")
