@@ -18,9 +18,18 @@ from harness.simh import MACHINE_INI
 
 KERNEL = Path(__file__).resolve().parent.parent / "build" / "kernel.lda"
 THROTTLE = "set throttle 300K"     # the KDF11-A's rate, as SET CLK RATE's default
+# --fast: full speed while the FORTH works; while KEY WAITs the KW11-L sleeps the
+# host at the 11/23's pace (pdp11-devices/kw11l.c), so an idle prompt costs little
+IDLE = "set cpu idle"
+# The amplifier rack starts switched off, as the lab's operator left it: the axes
+# stand still (z's brake on) however long the blocks take to load or the user
+# waits; it is switched on once Set.Up.Robot's servo holds them (README).
+RACK_OFF = "set plant power=off"
 CTRL_D, CTRL_E, CTRL_U = b"\x04", b"\x05", b"\x15"
 HINT = ("Console: leave with BYE (or ^D): the FORTH FLUSHes its blocks and the disk is "
         "detached. ^E gives SIMH's sim> prompt (SHOW PLANT, then CONT to come back).")
+RACK_HINT = ("The amplifier rack starts OFF: the axes stand still. After Set.Up.Robot, "
+             "switch it on: ^E, then SET PLANT POWER=ON, then CONT.")
 
 
 class Leave(Exception):
@@ -53,7 +62,8 @@ class LineWatcher:
 
 def boot_script(disk, trace=None, fast=False, kernel=KERNEL):
     return (f"do {MACHINE_INI}\n"
-            + ("" if fast else THROTTLE + "\n")
+            + (IDLE if fast else THROTTLE) + "\n"
+            + RACK_OFF + "\n"
             + f"attach rl0 {Path(disk).resolve()}\n"
             + (f"attach plant {Path(trace).resolve()}\n" if trace else "")
             + f"load {kernel}\n"
@@ -116,6 +126,7 @@ def session(simulator, disk, trace=None, fast=False):
         pace = "full speed" if fast else "real-time pace (300K instructions/s)"
         print(f"[console] booting the FORTH on the PDP-11/23, {pace}, disk {disk}")
         print(f"[console] {HINT}")
+        print(f"[console] {RACK_HINT}")
         sys.stdout.flush()
         size = os.get_terminal_size() if sys.stdout.isatty() else os.terminal_size((80, 24))
         child = pexpect.spawn(str(simulator), [str(ini)], timeout=None,

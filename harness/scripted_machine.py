@@ -82,11 +82,14 @@ def read_kernel_map(path=KERNEL_MAP):
 def feed_commands(sym, text, head):
     """SIMH deposits that put `text` and its CR into the FORTH's console receive
     ring at index `head` (the ring must be empty: RXTAIL = RXHEAD = head) and
-    advance RXHEAD, exactly as the DL11 receive interrupt would have."""
+    advance RXHEAD, exactly as the DL11 receive interrupt would have; and, as
+    that interrupt would, end a WAIT the kernel's KEY sleeps in (after `#wait`
+    the machine stops there; the CPU then goes on to test the ring again)."""
     mask, ring = sym["RING-MASK"], sym["RING"]
     feed = [f"deposit -b {ring + ((head + i) & mask):o} {ord(c):o}"
             for i, c in enumerate(text + "\r")]
-    return feed + [f"deposit {sym['RXHEAD']:o} {(head + len(text) + 1) & mask:o}"]
+    return feed + [f"deposit {sym['RXHEAD']:o} {(head + len(text) + 1) & mask:o}",
+                   "deposit cpu wait 0"]
 
 
 FORTH_ERROR = re.compile(r"\r\nError: ([^\r\n]*)")

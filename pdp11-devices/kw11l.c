@@ -21,11 +21,24 @@
    nothing here reads the host's clock.
 
    Devices SIMH paces from the clock (console polling, RQ's timer) read
-   tmr_poll/tmxr_poll: they are set to RATE/60 instructions, a constant. */
+   tmr_poll/tmxr_poll: they are set to RATE/60 instructions, a constant.
+
+   Idling (SIMH's own SET CPU IDLE; the console's --fast sets it): SIMH's
+   sim_idle needs a wall-calibrated timer, which this clock never is, so the
+   clock idles the host itself. A tick that finds the CPU in WAIT (the
+   kernel's KEY waiting for a key) sleeps the host until the wall clock has
+   caught up with the simulated time spent waiting since the CPU began to
+   wait; busy stretches still run at full speed. Waiting time thus passes at
+   the 11/23's real pace and costs the host little. Only when things happen
+   on the host changes: every event keeps its instruction count, so runs stay
+   deterministic. Without IDLE (scripted runs) WAIT costs one count per
+   simulated instruction time, as in stock SIMH. */
 #include "robot.h"
 
 extern int32 int_req[IPL_HLVL];
 extern int32 tmr_poll, tmxr_poll;
+extern int32 wait_state;                /* pdp11_cpu.c: the CPU is in WAIT */
+extern t_bool sim_idle_enab;            /* sim_timer.c: SET CPU IDLE */
 
 #define LKS_MON  0200
 #define LKS_IE   0100
@@ -38,6 +51,9 @@ static double base_time_s, base_instr;  /* time base, rebased when RATE changes 
 static int32 lks;
 static int32 tick_acc;                  /* remainder of the exact tick series */
 static uint32 ticks;                    /* ticks since power-up */
+static int idle_pacing;                 /* the CPU was waiting at the last tick */
+static uint32 idle_wall_ms;             /* host ms when that wait began */
+static double idle_time_s;              /* simulated s when that wait began */
 
 static t_stat kwl_rd (int32 *data, int32 PA, int32 access);
 static t_stat kwl_wr (int32 data, int32 PA, int32 access);
@@ -122,8 +138,30 @@ static t_stat kwl_wr (int32 data, int32 PA, int32 access)
     return SCPE_OK;
 }
 
+/* At a tick: sleep while simulated waiting time is ahead of the host's. */
+static void idle_pace (void)
+{
+    double ahead_ms;
+    uint32 wall;
+    if (!sim_idle_enab || !wait_state) {
+        idle_pacing = 0;
+        return;
+    }
+    wall = sim_os_msec ();
+    if (!idle_pacing) {
+        idle_pacing = 1;
+        idle_wall_ms = wall;
+        idle_time_s = robot_time ();
+        return;
+    }
+    ahead_ms = (robot_time () - idle_time_s) * 1000.0 - (double) (uint32) (wall - idle_wall_ms);
+    if (ahead_ms >= 1.0)
+        sim_os_ms_sleep ((unsigned int) (ahead_ms > 1000.0 ? 1000.0 : ahead_ms));
+}
+
 static t_stat kwl_svc (UNIT *uptr)
 {
+    idle_pace ();
     ticks++;
     lks |= LKS_MON;
     if (lks & LKS_IE)

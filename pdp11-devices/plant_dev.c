@@ -10,7 +10,9 @@
      POS (counts: puts the axis there at rest; a running counter counts it)
      device-wide: SET PLANT SEED=n (random walk seed, default 1983),
      SET PLANT SAMPLE=n (trace samples per simulated second, 0..1000,
-     default 60; 0 = rows at DAC writes only)
+     default 60; 0 = rows at DAC writes only), SET PLANT POWER=ON|OFF (the
+     amplifier rack's power switch, plant.h; on at power-up of the simulator;
+     the interactive console switches it off at boot)
    A rejected value (non-number, out of range, no axis selected) prints why,
    returns a SIMH error and leaves that parameter as it was; modifiers are
    applied left to right. The selection lasts until the end of the command.
@@ -45,6 +47,7 @@ static t_stat plant_select (UNIT *uptr, int32 axis, char *cptr, void *desc);
 static t_stat plant_set (UNIT *uptr, int32 which, char *cptr, void *desc);
 static t_stat plant_set_seed (UNIT *uptr, int32 val, char *cptr, void *desc);
 static t_stat plant_set_sample (UNIT *uptr, int32 val, char *cptr, void *desc);
+static t_stat plant_set_power_switch (UNIT *uptr, int32 val, char *cptr, void *desc);
 static t_stat plant_show_global (FILE *st, UNIT *uptr, int32 val, void *desc);
 static t_stat plant_show_axes (FILE *st, UNIT *uptr, int32 val, void *desc);
 
@@ -61,6 +64,7 @@ static MTAB plant_mod[] = {
     PARAM (P_PMIN), PARAM (P_PMAX), PARAM (P_WALK), PARAM (P_POS),
     { MTAB_XTD|MTAB_VDV, 0, NULL, "SEED", &plant_set_seed, NULL, NULL },
     { MTAB_XTD|MTAB_VDV, 0, NULL, "SAMPLE", &plant_set_sample, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, 0, NULL, "POWER", &plant_set_power_switch, NULL, NULL },
     { MTAB_XTD|MTAB_VDV, 0, "SETTINGS", NULL, NULL, &plant_show_global, NULL },
     { MTAB_XTD|MTAB_VUN, 0, "AXES", NULL, NULL, &plant_show_axes, NULL },
     { 0 }
@@ -255,10 +259,26 @@ static t_stat plant_set_sample (UNIT *uptr, int32 val, char *cptr, void *desc)
     return SCPE_OK;
 }
 
+static t_stat plant_set_power_switch (UNIT *uptr, int32 val, char *cptr, void *desc)
+{
+    int on;
+    if (cptr != NULL && strcmp (cptr, "ON") == 0)
+        on = 1;
+    else if (cptr != NULL && strcmp (cptr, "OFF") == 0)
+        on = 0;
+    else {
+        printf ("PLANT: POWER is ON or OFF (the amplifier rack's switch)\n");
+        return SCPE_ARG;
+    }
+    plant_dev_catch_up ();                       /* what happened so far, with the old state */
+    plant_set_power (&robot_plant, on);
+    return SCPE_OK;
+}
+
 static t_stat plant_show_global (FILE *st, UNIT *uptr, int32 val, void *desc)
 {
-    fprintf (st, "seed=%llu, sample=%d/s, time=%.6fs", (unsigned long long) robot_plant.seed,
-             sample_hz, robot_time ());
+    fprintf (st, "seed=%llu, sample=%d/s, power=%s, time=%.6fs", (unsigned long long) robot_plant.seed,
+             sample_hz, robot_plant.power ? "on" : "off", robot_time ());
     return SCPE_OK;
 }
 

@@ -15,8 +15,9 @@
    only the stock clk_dev's own routines act on; with clk_dev out of the
    table its register, interrupt and service are never installed, so they
    change nothing. tmr_poll and tmxr_poll (console, DZ, RQ timing) are set by
-   kw11l.c to the constant RATE/60. sim_idle(TMR_CLK) (SET CPU IDLE) never
-   idles: the calibrated timer it needs is never started.
+   kw11l.c to the constant RATE/60. sim_idle(TMR_CLK) never idles: the
+   calibrated timer it needs is never started; with SET CPU IDLE the KW11-L
+   idles the host itself while the CPU WAITs (kw11l.c).
 
    Hooks. scp.c declares `void (*sim_vm_init)(void)` without initialising it
    and calls it first thing in main(); with -fcommon this file's initialised

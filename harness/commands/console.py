@@ -3,7 +3,7 @@ import argparse
 import shutil
 from pathlib import Path
 
-from harness.console_session import HINT, session
+from harness.console_session import HINT, RACK_HINT, session
 from harness.simh import PDP11
 
 NAME = "console"
@@ -26,6 +26,8 @@ ready for `1000 LOAD`. The machine runs at the 11/23's pace (SIMH SET THROTTLE
 paces) unless --fast.
 
 {HINT}
+
+{RACK_HINT}
 
 The disk is the working copy local/robot.dsk (created from build/robot.dsk when
 missing; make never overwrites it), or --disk IMAGE."""
