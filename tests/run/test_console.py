@@ -82,3 +82,33 @@ def test_missing_disk_is_a_clear_error(tmp_path):
     child.close()
     assert "none.dsk: no such disk image" in child.before
     assert child.exitstatus == 1
+
+
+def simh_command(child, command):
+    """^E, one SIMH command, CONT; what the command printed."""
+    child.send("\x05")
+    child.expect("sim> ")
+    child.send(command + "\r")
+    child.expect("sim> ")
+    printed = child.before
+    child.send("cont\r")
+    assert probe_prompt(child) == 0
+    return printed
+
+
+def test_readme_first_session_with_the_rack_switched_on_by_hand(tmp_path):
+    disk = tmp_path / "work.dsk"
+    shutil.copyfile(PRISTINE, disk)
+    child = console(disk)
+    assert "power=off" in simh_command(child, "show plant")      # the console's boot
+    for line in ("1000 LOAD", "Set.Up.Robot"):
+        child.send(line + "\r")
+        child.expect(r" ok\r\n", timeout=60)
+    simh_command(child, "set plant power=on")
+    child.send("800 800 0 0 Abs.Move Move.Complete?\r")
+    child.expect(r"Move.Complete\?  ok\r\n", timeout=60)
+    child.send("0 Read.Counter . 1 Read.Counter .\r")
+    child.expect(r"Read.Counter \. (-?\d+) (-?\d+)  ok\r\n")
+    assert all(abs(int(c) - 800) < 60 for c in child.match.groups())
+    child.send("BYE\r")
+    child.expect(pexpect.EOF)
