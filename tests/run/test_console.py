@@ -110,5 +110,7 @@ def test_readme_first_session_with_the_rack_switched_on_by_hand(tmp_path):
     child.send("0 Read.Counter . 1 Read.Counter .\r")
     child.expect(r"Read.Counter \. (-?\d+) (-?\d+)  ok\r\n")
     assert all(abs(int(c) - 800) < 60 for c in child.match.groups())
+    child.send("1020 LOAD\r")                                  # the demonstration block
+    child.expect(r"1020 LOAD x y z t counters: .*\r\n(.*\r\n){3} ok\r\n", timeout=60)
     child.send("BYE\r")
     child.expect(pexpect.EOF)
