@@ -14,6 +14,8 @@ from pathlib import Path
 
 import pexpect
 
+from harness import pty_child
+
 from harness.simh import MACHINE_INI
 
 KERNEL = Path(__file__).resolve().parent.parent / "build" / "kernel.lda"
@@ -140,6 +142,6 @@ def session(simulator, disk, trace=None, fast=False):
             say(("blocks flushed; " if flushed else "") + f"disk {disk} detached. Bye.")
             return 0 if flushed else 1
         finally:
-            child.close(force=True)
+            pty_child.close(child)
         say("the simulator exited (blocks are FLUSHed only when you leave with BYE or ^D)")
         return 0

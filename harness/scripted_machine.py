@@ -28,6 +28,7 @@ from pathlib import Path
 
 import pexpect
 
+from harness import pty_child
 from harness.simh import MACHINE_INI, PDP11, SimhError
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -226,7 +227,7 @@ class ScriptedMachine(contextlib.AbstractContextManager):
             self.child.expect(pexpect.EOF, timeout=10)
         except (ScriptError, pexpect.TIMEOUT, pexpect.EOF, OSError):
             pass            # a simulator already gone or stuck: killed below
-        self.child.close(force=True)
+        pty_child.close(self.child)
         self._tmp.cleanup()
 
     def __exit__(self, *exc):

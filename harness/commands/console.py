@@ -6,8 +6,6 @@ from pathlib import Path
 from harness.console_session import HINT, RACK_HINT, session
 from harness.simh import PDP11
 
-NAME = "console"
-HELP = "the interactive FORTH console on the robot's PDP-11/23 (what make run starts)"
 ROOT = Path(__file__).resolve().parents[2]
 WORK_DISK = ROOT / "local" / "robot.dsk"
 PRISTINE = ROOT / "build" / "robot.dsk"

@@ -7,11 +7,10 @@ from pathlib import Path
 from harness import simh
 from harness.listing import ListingError, make_listing
 
-NAME = "listing"
-HELP = "list blocks 1000-1012 beside the addresses and words each line compiled or assembled"
 ERRORS = (ListingError, simh.SimhError)
 
-DESCRIPTION = HELP + """.
+DESCRIPTION = """\
+List blocks beside the addresses and words each line compiled or assembled.
 
 Boots the FORTH on a copy of build/robot.dsk, runs `1000 LOAD` with a SIMH
 breakpoint on PARSE-NAME that records where each name was read and what the

@@ -2,8 +2,6 @@
 from harness import regression
 from harness.trace_features import FeatureError
 
-NAME = "regress"
-HELP = "run the regression scenarios against their goldens, or --update them"
 ERRORS = (ValueError, FeatureError)
 
 

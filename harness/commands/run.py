@@ -12,8 +12,6 @@ from harness.script_run import run_steps
 from harness.scripted_machine import KERNEL, ScriptError, ScriptedMachine
 from harness.simh import PDP11, SimhError
 
-NAME = "run"
-HELP = "run a console script on a fresh copy of the disk: transcript and plant trace"
 ERRORS = (script.ScriptSyntaxError, ScriptError, SimhError)
 PRISTINE = Path(__file__).resolve().parents[2] / "build" / "robot.dsk"
 

@@ -6,8 +6,6 @@ from harness import simh
 from harness.commands.argtypes import count
 from harness.timing import CHUNK, TimingError, measure
 
-NAME = "timing"
-HELP = "price the executions of a piece of PDP-11 code on a KDF11-A (11/23)"
 ERRORS = (TimingError, simh.SimhError)
 
 DESCRIPTION = """\
