@@ -92,9 +92,21 @@ VARIABLE DISARMED  ( -- a ) \ vector DISARM put back, -1 = none
   DUP -35 = IF DROP ." no such block" EXIT THEN
   DUP -256 = IF DROP .TRAP EXIT THEN
   ." error " . ;
-: .ERROR  ( code -- )  \ Error: what: word [in block b line l]
-  CR ." Error: " .ERROR-TEXT  ." : " WHAT 2@ TYPE
-  BLK @ IF ."  in block " BLK @ . ." line " >IN @ 1- 0 MAX 64 / . THEN CR ;
+\ An undefined word that another vocabulary holds (after an error the context is
+\ CURRENT again, so the editor's P is gone until EDITOR is typed): say which.
+: .VOC  ( body -- )  4 - >NAME ?DUP IF .NAME THEN ;  \ a vocabulary's name
+: .ELSEWHERE  ( -- )
+  VOC-LINK @ BEGIN ?DUP WHILE
+    DUP 8 -  DUP CONTEXT @ <> OVER FORTH-BODY <> AND IF
+      WHAT 2@ 2 PICK OVER CHAIN @ (FIND) IF
+        ."  (a word of " DUP .VOC ." : type " .VOC ."  to select it again)" DROP EXIT
+      THEN
+    THEN DROP @
+  REPEAT ;
+: .ERROR  ( code -- )  \ Error: what: word [in block b line l] [(where it is)]
+  CR ." Error: " DUP .ERROR-TEXT  ." : " WHAT 2@ TYPE
+  BLK @ IF ."  in block " BLK @ . ." line " >IN @ 1- 0 MAX 64 / . THEN
+  -13 = IF .ELSEWHERE THEN CR ;
 : UNLINK  ( lfa -- )  \ the newest header of CURRENT leaves, HERE goes back to it
   DUP @ OVER 2+ C@ CURRENT @ SWAP CHAIN !  DP !  CURRENT @ NEWEST 2+ LAST ! ;
 : DISCARD-DEFINITION  ( -- )  \ a definition cut short leaves nothing behind
