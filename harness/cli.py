@@ -20,6 +20,7 @@ COMMANDS = {
     "plot": "draw PNG/SVG figures from a plant trace (CSV from ATTACH PLANT)",
     "timing": "price the executions of a piece of PDP-11 code on a KDF11-A (11/23)",
     "listing": "list blocks beside the addresses and words each line compiled or assembled",
+    "tick": "walk the 1983 servo one 60 Hz tick at a time: its arrays, counters and DACs",
 }
 
 

@@ -208,6 +208,17 @@ class ScriptedMachine(contextlib.AbstractContextManager):
                               "(the line is still running)")
         return answer
 
+    def run_to(self, address, limit):
+        """Run until the instruction at `address` is next (a SIMH breakpoint, removed
+        again), at most `limit` simulated seconds; the Answer (`stopped` names the
+        breakpoint, or says the time ran out). The QUERY breakpoint stays set."""
+        self.simh(f"break {address:o}")
+        try:
+            answer = self._run(f"step {self._steps(limit)}", f"run to {address:o}")
+        finally:
+            self.simh(f"nobreak {address:o}")
+        return self._limited(answer, limit)
+
     def wait(self, seconds):
         """Let `seconds` of simulated time pass with no input; the output."""
         answer = self._run(f"step {self._steps(seconds)}", f"#wait {seconds}")
