@@ -22,6 +22,9 @@ void plant_dev_init (void);
 void plant_dev_rate_changed (int32 old_rate);                        /* power-up state */
 void plant_dev_command_done (void);               /* after each SCP command */
 
+/* EXAMINE/DEPOSIT at 160000-177777 reach the I/O page (io_page_examine.c). */
+void io_page_examine_install (void);
+
 /* Console input pacing (console_pacing.c). */
 void console_pacing_install (void);
 void console_pacing_rate_changed (void);
