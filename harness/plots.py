@@ -48,7 +48,8 @@ def pick_moves(series, windows=(), v_idle=mv.V_IDLE, min_travel=mv.MIN_TRAVEL):
         longest, short = mv.long_and_short(found)
         chosen = [(longest, "long move")]
         if short:
-            chosen.append((short, f"short move (below MaxVel, {longest.peak_code} codes)"))
+            chosen.append((short, f"short move (peak below the long move's "
+                                  f"{longest.peak_code} codes)"))
         return chosen
     chosen = []
     for start, end in windows:
@@ -104,8 +105,8 @@ def moves_figure(trace, axis, windows=(), v_idle=mv.V_IDLE, min_travel=mv.MIN_TR
         _move_panel(ax, series, move, label, kv)
     note = ""
     if not windows and len(chosen) == 1:
-        note = (f"\nno short move: every move here reaches MaxVel "
-                f"({chosen[0][0].peak_code} codes above 0-Vel)")
+        note = (f"\nno short move: every move here peaks at the long move's "
+                f"{chosen[0][0].peak_code} codes above 0-Vel (MaxVel)")
     fig.suptitle(f"Axis {series.axis}: velocity against position "
                  f"(the paper's Figure 2), {Path(trace.name).name}{note}")
     return fig

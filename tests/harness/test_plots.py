@@ -131,4 +131,5 @@ def test_moves_figure_says_when_there_is_no_short_move(tmp_path):
     fig = plots.moves_figure(trace.read(path), "X")
     (ax,) = [a for a in fig.axes if a.get_lines()]
     assert ax.get_title().startswith("long move: -440 to ")
-    assert "no short move: every move here reaches MaxVel (300 codes" in fig.get_suptitle()
+    assert "no short move: every move here peaks at the long move's 300 codes" \
+        in fig.get_suptitle()

@@ -9,7 +9,8 @@ What the measurement showed, and why (blocks 1003-1007):
 - An axis inside Range (|error| < 5) gets 0-Vel (State Stop, Velocity 0); once
   it drifts out, Velocity is 0 < distance, so 1006 kicks it at MaxVel again.
   The axes therefore never rest: they hunt around the target with a period of
-  four ticks (15 Hz) and about +-20 counts, every axis, moving or not.
+  four or five ticks (15 or 12 Hz, depending on the axis and the phase) and
+  about +-20 counts, every axis, moving or not.
 - Command.Status of an axis is cleared the first tick its counter is seen
   inside Range; if the hunting cycle steps over the window (+-4 counts), it is
   never cleared and Move.Complete? never returns (400 -300 600 0 below).
