@@ -26,10 +26,9 @@ RANGE = 5
 MOVES = [(1600, 0, 0), (-1600, 0, 0), (200, 0, 0), (40, 0, 0), (0, 800, 0),
          (0, -2400, 0), (0, 60, 0), (0, 0, 400), (0, 0, 2000), (0, 0, 1000),
          (0, 0, 1030), (4000, 3000, 1500), (0, 0, 200)]
-# measured in this sequence: |counter - target| at return up to 48 (x, after the
-# y move to 800: x hunting while y arrived), over 3 s of settling up to 42; a
-# run of the same moves without the helper lines first (another phase of the
-# hunting) gave 26 and 27.
+# measured in this sequence: |counter - target| two seconds after Abs.Move and
+# over 3 s of settling up to about 45 (the hunting's amplitude, which depends on
+# its phase: other runs gave 26 and 27).
 AT_RETURN, SETTLING = 60, 50
 
 
@@ -38,9 +37,14 @@ def errors(plant, target):
 
 
 def test_moves_arrive_then_hunt(robot):
+    """Abs.Move, then two simulated seconds (the longest move, 4000 counts at MaxVel,
+    takes 0.7 s): not Move.Complete?, which never returns when an axis's hunting
+    steps over the window, and which of these moves does that depends on the
+    hunting's phase, i.e. on every instruction the kernel ran before."""
     hunting = 0
     for target in MOVES:
-        robot.send("%d %d %d 0 Abs.Move Move.Complete?" % target, timeout=120)
+        robot.send("%d %d %d 0 Abs.Move" % target)
+        robot.idle(2.0)
         at = errors(robot.plant(), target)
         assert max(map(abs, at)) <= AT_RETURN, (target, at)
         worst = [0, 0, 0]
@@ -50,8 +54,6 @@ def test_moves_arrive_then_hunt(robot):
             worst = [max(w, abs(v)) for w, v in zip(worst, e)]
         assert max(worst) <= SETTLING, (target, worst)
         hunting += max(worst) >= RANGE
-        # every Command.Status of x, y, z is 0 once Move.Complete? returned
-        assert numbers(robot.send("Command.Status A."))[:3] == [0, 0, 0]
     # no move settles inside Range: after each, some axis leaves it (measured: all 13)
     assert hunting == len(MOVES)
 
