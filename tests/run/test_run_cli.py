@@ -29,6 +29,7 @@ def test_two_runs_give_identical_files_and_leave_the_disk_alone(tmp_path):
     before = hashlib.sha256(PRISTINE.read_bytes()).hexdigest()
     outputs = []
     for out in ("a", "b"):
+        (tmp_path / out).mkdir()
         r = harness("run", script, "--out", tmp_path / out)
         assert r.returncode == 0, r.stderr
         outputs.append([(tmp_path / out / name).read_bytes()
