@@ -19,7 +19,9 @@ from harness import pty_child
 from harness.simh import MACHINE_INI
 
 KERNEL = Path(__file__).resolve().parent.parent / "build" / "kernel.lda"
-THROTTLE = "set throttle 300K"     # the KDF11-A's rate, as SET CLK RATE's default
+# the 11/23's pace (CLK RATE, 300K instructions/s) from the first instruction; SIMH's
+# SET THROTTLE cannot pace the kernel's WAIT (pdp11-devices/kw11l.c)
+REALTIME = "set clk realtime"
 # --fast: full speed while the FORTH works; while KEY WAITs the KW11-L sleeps the
 # host at the 11/23's pace (pdp11-devices/kw11l.c), so an idle prompt costs little
 IDLE = "set cpu idle"
@@ -64,7 +66,7 @@ class LineWatcher:
 
 def boot_script(disk, trace=None, fast=False, kernel=KERNEL):
     return (f"do {MACHINE_INI}\n"
-            + (IDLE if fast else THROTTLE) + "\n"
+            + (IDLE if fast else REALTIME) + "\n"
             + RACK_OFF + "\n"
             + f"attach rl0 {Path(disk).resolve()}\n"
             + (f"attach plant {Path(trace).resolve()}\n" if trace else "")

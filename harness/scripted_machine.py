@@ -37,6 +37,12 @@ KERNEL_MAP = ROOT / "build" / "kernel.map"
 KERNEL_SYMBOLS = ("QUERY", "RXHEAD", "RXTAIL", "RING", "RING-MASK", "TIB-SIZE")
 
 PROMPT = "sim> "
+# WAIT (the kernel's KEY with an empty ring, e.g. during #wait) skips straight to
+# the next event instead of counting one instruction time per host loop: the same
+# simulated time and instruction counts, far less host work. SIMH's own switch (a
+# hidden CPU register). Not for the console: idle time there is paced to the
+# wall clock at the clock's ticks (pdp11-devices/kw11l.c), which this would skip.
+SKIP_WAITS = "deposit cpu wait_enable 1"
 # SIMH reports every stop as "\n<reason>, PC: <octal> (<instruction>)\n" then prompts.
 STOP = re.compile(r"\r\n([^\r\n]*), PC: ([0-7]+) \(([^\r\n]*)\)\r\nsim> ")
 EXAMINED = re.compile(r"([0-7]+):\s+([0-7]+)")
@@ -114,6 +120,7 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         self._feed = Path(self._tmp.name) / "feed.ini"
         ini = Path(self._tmp.name) / "boot.ini"
         ini.write_text(f"do {MACHINE_INI}\n"
+                       f"{SKIP_WAITS}\n"
                        f"attach rl0 {disk}\n"
                        + "".join(f"{c}\n" for c in settings)
                        + (f"attach plant {trace}\n" if trace else "")

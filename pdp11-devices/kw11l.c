@@ -23,16 +23,23 @@
    Devices SIMH paces from the clock (console polling, RQ's timer) read
    tmr_poll/tmxr_poll: they are set to RATE/60 instructions, a constant.
 
-   Idling (SIMH's own SET CPU IDLE; the console's --fast sets it): SIMH's
-   sim_idle needs a wall-calibrated timer, which this clock never is, so the
-   clock idles the host itself. A tick that finds the CPU in WAIT (the
-   kernel's KEY waiting for a key) sleeps the host until the wall clock has
-   caught up with the simulated time spent waiting since the CPU began to
-   wait; busy stretches still run at full speed. Waiting time thus passes at
-   the 11/23's real pace and costs the host little. Only when things happen
-   on the host changes: every event keeps its instruction count, so runs stay
-   deterministic. Without IDLE (scripted runs) WAIT costs one count per
-   simulated instruction time, as in stock SIMH. */
+   Pacing to the wall clock (nothing else here reads the host's clock, and
+   pacing changes only when things happen on the host: every event keeps its
+   instruction count, so runs stay deterministic). At a tick, the clock sleeps
+   the host while simulated time is ahead of the wall clock since a reference
+   point; a reference more than 100 ms behind (the machine was stopped at
+   sim>, or the host was slow) is dropped and taken anew, so no burst follows.
+     SET CLK REALTIME (NOREALTIME to end): every tick, busy or not: the 11/23's
+       real pace from the first instruction. The console's real-time mode uses
+       it: SIMH 3.8.1's SET THROTTLE cannot pace WAIT (measured: a WAIT loop ran
+       16 times too fast) and measures the host anew after every CONT.
+     SET CPU IDLE (SIMH's own switch; the console's --fast sets it): only ticks
+       that find the CPU in WAIT (the kernel's KEY waiting for a key), so an
+       idle prompt passes at the real pace and costs the host little while
+       busy stretches run at full speed. (SIMH's own sim_idle needs a
+       wall-calibrated timer, which this clock never is.)
+   Without either (scripted runs) WAIT costs one count per simulated
+   instruction time, as in stock SIMH. */
 #include "robot.h"
 
 extern int32 int_req[IPL_HLVL];
@@ -51,9 +58,11 @@ static double base_time_s, base_instr;  /* time base, rebased when RATE changes 
 static int32 lks;
 static int32 tick_acc;                  /* remainder of the exact tick series */
 static uint32 ticks;                    /* ticks since power-up */
-static int idle_pacing;                 /* the CPU was waiting at the last tick */
-static uint32 idle_wall_ms;             /* host ms when that wait began */
-static double idle_time_s;              /* simulated s when that wait began */
+static int realtime;                    /* SET CLK REALTIME */
+static int pacing;                      /* a reference point is held */
+static uint32 pace_wall_ms;             /* host ms at the reference point */
+static double pace_time_s;              /* simulated s at the reference point */
+#define PACE_SLACK_MS 100.0             /* further behind: take a new reference */
 
 static t_stat kwl_rd (int32 *data, int32 PA, int32 access);
 static t_stat kwl_wr (int32 data, int32 PA, int32 access);
@@ -62,6 +71,7 @@ static t_stat kwl_reset (DEVICE *dptr);
 static t_stat kwl_set_rate (UNIT *uptr, int32 val, char *cptr, void *desc);
 static t_stat kwl_show_rate (FILE *st, UNIT *uptr, int32 val, void *desc);
 static t_stat kwl_show_state (FILE *st, UNIT *uptr, int32 val, void *desc);
+static t_stat kwl_set_realtime (UNIT *uptr, int32 val, char *cptr, void *desc);
 
 double robot_time (void)
 {
@@ -107,6 +117,8 @@ static REG kwl_reg[] = {
 static MTAB kwl_mod[] = {
     { MTAB_XTD|MTAB_VDV, 0, "RATE", "RATE", &kwl_set_rate, &kwl_show_rate, NULL },
     { MTAB_XTD|MTAB_VDV, 0, "STATE", NULL, NULL, &kwl_show_state, NULL },
+    { MTAB_XTD|MTAB_VDV, 1, NULL, "REALTIME", &kwl_set_realtime, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, 0, NULL, "NOREALTIME", &kwl_set_realtime, NULL, NULL },
     { MTAB_XTD|MTAB_VDV, 0, "ADDRESS", NULL, NULL, &show_addr, NULL },
     { MTAB_XTD|MTAB_VDV, 0, "VECTOR", NULL, NULL, &show_vec, NULL },
     { 0 }
@@ -138,30 +150,28 @@ static t_stat kwl_wr (int32 data, int32 PA, int32 access)
     return SCPE_OK;
 }
 
-/* At a tick: sleep while simulated waiting time is ahead of the host's. */
-static void idle_pace (void)
+/* At a tick: sleep while simulated time is ahead of the host's (see above). */
+static void pace (void)
 {
     double ahead_ms;
     uint32 wall;
-    if (!sim_idle_enab || !wait_state) {
-        idle_pacing = 0;
+    if (!realtime && !(sim_idle_enab && wait_state)) {
+        pacing = 0;
         return;
     }
     wall = sim_os_msec ();
-    if (!idle_pacing) {
-        idle_pacing = 1;
-        idle_wall_ms = wall;
-        idle_time_s = robot_time ();
-        return;
-    }
-    ahead_ms = (robot_time () - idle_time_s) * 1000.0 - (double) (uint32) (wall - idle_wall_ms);
-    if (ahead_ms >= 1.0)
+    ahead_ms = (robot_time () - pace_time_s) * 1000.0 - (double) (uint32) (wall - pace_wall_ms);
+    if (!pacing || ahead_ms < -PACE_SLACK_MS) {
+        pacing = 1;
+        pace_wall_ms = wall;
+        pace_time_s = robot_time ();
+    } else if (ahead_ms >= 1.0)
         sim_os_ms_sleep ((unsigned int) (ahead_ms > 1000.0 ? 1000.0 : ahead_ms));
 }
 
 static t_stat kwl_svc (UNIT *uptr)
 {
-    idle_pace ();
+    pace ();
     ticks++;
     lks |= LKS_MON;
     if (lks & LKS_IE)
@@ -206,9 +216,18 @@ static t_stat kwl_set_rate (UNIT *uptr, int32 val, char *cptr, void *desc)
     return SCPE_OK;
 }
 
+static t_stat kwl_set_realtime (UNIT *uptr, int32 val, char *cptr, void *desc)
+{
+    if (cptr != NULL)
+        return SCPE_ARG;
+    realtime = val;
+    pacing = 0;
+    return SCPE_OK;
+}
+
 static t_stat kwl_show_rate (FILE *st, UNIT *uptr, int32 val, void *desc)
 {
-    fprintf (st, "rate=%d instructions/s", robot_rate);
+    fprintf (st, "rate=%d instructions/s%s", robot_rate, realtime ? ", realtime" : "");
     return SCPE_OK;
 }
 

@@ -19,9 +19,9 @@ ERRORS = (ConsoleError,)
 
 DESCRIPTION = f"""\
 Boot the FORTH on the robot's PDP-11/23 and join your terminal to its console,
-ready for `1000 LOAD`. The machine runs at the 11/23's pace (SIMH SET THROTTLE
-300K: SIMH measures the host for a few million instructions first, then
-paces) unless --fast.
+ready for `1000 LOAD`. The machine runs at the 11/23's pace (SET CLK
+REALTIME) unless --fast: then at full speed while the FORTH works, and at the
+11/23's pace while it waits for a key (SET CPU IDLE), which costs the host little.
 
 {HINT}
 
