@@ -15,7 +15,8 @@ VARIABLE STATE  ( -- a ) \ true while compiling
 10 VAR BASE  ( -- a )
 VARIABLE DP  ( -- a ) \ HERE; set by the metacompiler
 VARIABLE LAST  ( -- a ) \ name field of the newest word
-VARIABLE CONTEXT  ( -- a ) \ vocabulary searched first (its body address)
+8 ARRAY CONTEXT  ( -- a ) \ the search order: wid searched first, then the rest
+VARIABLE #ORDER  ( -- a ) \ wordlists in the search order (CONTEXT's cells in use)
 VARIABLE CURRENT  ( -- a ) \ vocabulary new words go into
 VARIABLE VOC-LINK  ( -- a ) \ newest vocabulary's link cell
 VARIABLE FENCE  ( -- a ) \ FORGET stops here (end of the kernel)
@@ -23,7 +24,7 @@ VARIABLE HANDLER  ( -- a ) \ innermost CATCH frame
 VARIABLE >IN  ( -- a )
 VARIABLE BLK  ( -- a ) \ block being interpreted, 0 = none
 VARIABLE #TIB  ( -- a )
-VARIABLE SOURCE-ID  ( -- a ) \ 0 terminal (or block), -1 EVALUATE
+VARIABLE SRC-ID  ( -- a ) \ SOURCE-ID's value: 0 terminal (or block), -1 EVALUATE
 2 ARRAY SRC  ( -- a ) \ address and length of the current text source
 VARIABLE HLD  ( -- a ) \ pictured numeric output pointer
 VARIABLE WARNING  ( -- a )
@@ -62,14 +63,24 @@ VARIABLE WARNING  ( -- a )
     OVER I + C@ OVER I + C@ - ?DUP IF 0< 2* 1+ NIP NIP UNLOOP R> DROP EXIT THEN
   LOOP 2DROP R> DUP IF 0< 2* 1+ NEGATE THEN ;
 
-\ ---- errors: CATCH and THROW (Forth-94 exception words) --------------------------
-: CATCH  ( xt -- 0 | code )
-  SP@ >R  HANDLER @ >R  RP@ HANDLER !  EXECUTE  R> HANDLER !  R> DROP  0 ;
-: THROW  ( code -- )
+\ ---- errors: CATCH and THROW (Forth-2012 exception words) -------------------------
+: SOURCE-ID  ( -- 0 | -1 )  SRC-ID @ ;  \ CORE EXT: 0 user input device, -1 EVALUATE
+\ A CATCH frame also holds the input source, which THROW restores (Forth-2012
+\ 9.6.1.2275): a word that fails inside EVALUATE or LOAD leaves the caller's
+\ source in place. ERR-BLK and ERR-IN keep where the error happened, for .ERROR.
+VARIABLE ERR-BLK  ( -- a ) \ BLK when the last THROW happened
+VARIABLE ERR-IN  ( -- a ) \ >IN then
+: CATCH  ( i*x xt -- j*x 0 | i*x code )  \ EXCEPTION
+  SRC 2@ >R >R  >IN @ >R  BLK @ >R  SRC-ID @ >R
+  SP@ >R  HANDLER @ >R  RP@ HANDLER !  EXECUTE  R> HANDLER !
+  RP@ 12 + RP!  0 ;  \ drop the saved SP and the saved source
+: THROW  ( k*x code -- k*x | i*x code )  \ EXCEPTION
   ?DUP IF
     DUP -256 = IF DISARM 0 PRIORITY! THEN  \ a trap arrives at priority 7
+    BLK @ ERR-BLK !  >IN @ ERR-IN !
     HANDLER @ 0= IF .ERROR WARM THEN  \ no CATCH: report, restart QUIT
-    HANDLER @ RP!  R> HANDLER !  R> SWAP >R SP! DROP R> THEN ;
+    HANDLER @ RP!  R> HANDLER !  R> SWAP >R SP! DROP R>
+    R> SRC-ID !  R> BLK !  R> >IN !  R> R> SRC 2! THEN ;
 VARIABLE ABORT-MSG  ( -- a ) \ counted message of the last ABORT"
 : ABORT  ( -- )  -1 THROW ;
 : (ABORT")  ( f -- )  R> COUNT 2DUP + ALIGNED >R ROT IF DROP 1- ABORT-MSG ! -2 THROW THEN 2DROP ;
@@ -84,7 +95,7 @@ VARIABLE ABORT-MSG  ( -- a ) \ counted message of the last ABORT"
 : ,  ( x -- )  HERE 2 ALLOT ! ;
 : C,  ( c -- )  HERE 1 ALLOT C! ;
 : ALIGN  ( -- )  HERE 1 AND ALLOT ;
-: PAD  ( -- a )  HERE 68 + ;
+: PAD  ( -- a )  HERE 68 + ;  \ 92 bytes up to UNUSED's reserve; the pictured buffer below it
 : COMPILE,  ( xt -- )  , ;
 : NAME>  ( nfa -- xt )  DUP C@ 31 AND + 1+ ALIGNED ;
 : >BODY  ( xt -- a )  4 + ;
@@ -101,7 +112,8 @@ VARIABLE ABORT-MSG  ( -- a ) \ counted message of the last ABORT"
 : <#  ( -- )  PAD HLD ! ;
 : HOLD  ( c -- )  -1 HLD +! HLD @ C! ;
 : DIGIT  ( n -- c )  DUP 9 > IF 7 + THEN [CHAR] 0 + ;
-: #  ( ud -- ud' )  BASE @ >R  0 R@ UM/MOD  R> SWAP >R UM/MOD  R> ROT DIGIT HOLD ;
+: UD/MOD  ( ud u -- rem ud' )  >R 0 R@ UM/MOD R> SWAP >R UM/MOD R> ;
+: #  ( ud -- ud' )  BASE @ UD/MOD ROT DIGIT HOLD ;
 : #S  ( ud -- 0 0 )  BEGIN # 2DUP OR 0= UNTIL ;
 : #>  ( ud -- a u )  2DROP HLD @ PAD OVER - ;
 : SIGN  ( n -- )  0< IF [CHAR] - HOLD THEN ;

@@ -128,8 +128,8 @@ CREATE CUR-BLK  ( -- a ) -1 ,   \ the block UPDATE marks, -1 = none
 : LOAD ( blk -- ) \ interpret block blk, then continue where we were
    DUP 0= ABORT" block 0 cannot be loaded"
    DUP (BLOCK) DROP                  \ a bad block fails here, source unchanged
-   BLK @ >R >IN @ >R SOURCE-ID @ >R  BLK ! 0 >IN ! 0 SOURCE-ID !
-   INTERPRET  R> SOURCE-ID ! R> >IN ! R> BLK ! ;
+   BLK @ >R >IN @ >R SRC-ID @ >R  BLK ! 0 >IN ! 0 SRC-ID !
+   INTERPRET  R> SRC-ID ! R> >IN ! R> BLK ! ;
 : THRU ( blk1 blk2 -- ) 1+ SWAP ?DO I LOAD LOOP ;
 : --> ( -- ) \ continue loading with the next block
    BLK @ 0= ABORT" --> outside a loaded block"  1 BLK +! 0 >IN ! ; IMMEDIATE

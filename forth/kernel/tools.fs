@@ -60,10 +60,11 @@ CREATE CURSORS 8 ALLOT  ( -- a ) \ WORDS' place in each chain
 : (FORGET)  ( lfa -- )  \ remove every word from lfa up
   DUP FENCE @ U< IF -15 THROW THEN
   DUP RESTORE-VECTORS  DUP TRIM-VOCS
-  CONTEXT @ OVER U< 0= IF FORTH-BODY CONTEXT ! THEN
+  #ORDER @ 2* CONTEXT + CONTEXT ?DO  \ forgotten word lists leave the search order
+    I @ OVER U< 0= IF FORTH-BODY I ! THEN  2 +LOOP
   CURRENT @ OVER U< 0= IF FORTH-BODY CURRENT ! THEN
   DP !  CURRENT @ NEWEST 2+ LAST ! ;
 : FORGET  ( "name" -- )
-  PARSE-NAME CURRENT @ OVER CHAIN @ (FIND) ?DUP 0= IF -13 THROW THEN 2- (FORGET) ;
+  PARSE-NAME 2DUP CURRENT @ WID-FIND ?DUP 0= IF WHAT 2! -13 THROW THEN
+  NIP NIP 2- (FORGET) ;
 : MARKER  ( "name" -- )  ALIGN HERE CREATE , DOES> @ (FORGET) ;
-: ENVIRONMENT?  ( a u -- false )  2DROP FALSE ;

@@ -16,6 +16,12 @@ s" forth/kernel/core.fs" kernel
 s" forth/kernel/interp.fs" kernel
 s" forth/kernel/quit.fs" kernel
 s" forth/kernel/tools.fs" kernel
+s" forth/kernel/search.fs" kernel
+s" forth/kernel/coreext.fs" kernel
+s" forth/kernel/double.fs" kernel
+s" forth/kernel/string.fs" kernel
+s" forth/kernel/toolsext.fs" kernel
+s" forth/kernel/facility.fs" kernel
 s" forth/kernel/disk.fs" file-exists? [if]
   s" forth/kernel/disk.fs" kernel
 [else]
@@ -45,12 +51,12 @@ tvoc-link @ body! VOC-LINK
     voc-next @ repeat ;
 write-heads
 \ vector v -> STUBS+v at priority 7; stub: JSR R0,@#TRAPPED, except the
-\ console receiver (JMP @#RXINT) and the line clock (RTI)
+\ console receiver (JMP @#RXINT) and the line clock (JMP @#TICK: counts ticks)
 : fill-vectors ( -- )
   $200 0 do
     [lbl] STUBS i + i t!  $E0 i 2 + t!
     i $30 = if $5F [lbl] STUBS i + t!  [lbl] RXINT [lbl] STUBS i + 2 + t! else
-    i $40 = if 2 [lbl] STUBS i + t!  $A0 [lbl] STUBS i + 2 + t! else
+    i $40 = if $5F [lbl] STUBS i + t!  [lbl] TICK [lbl] STUBS i + 2 + t! else
       $081F [lbl] STUBS i + t!  [lbl] TRAPPED [lbl] STUBS i + 2 + t! then then
   4 +loop ;
 fill-vectors
