@@ -42,10 +42,10 @@ CODE 2R@  ( -- x1 x2 ) ( R: x1 x2 -- x1 x2 )  \ CORE EXT
 : RESTORE-INPUT  ( x1 .. xn n -- f )  \ CORE EXT: f false when restored
   DUP 5 <> IF 0 ?DO DROP LOOP TRUE EXIT THEN DROP
   SRC-ID ! BLK ! >IN ! SRC 2! FALSE ;
-: ESCAPE  ( c -- c' )  \ the character \c stands for in S\" (\m \x: S\" itself)
+: ESCAPE  ( c -- c' )  \ the character \c stands for in S\" (\m \n \x: ESC-PARSE)
   DUP [CHAR] a = IF DROP 7 EXIT THEN   DUP [CHAR] b = IF DROP 8 EXIT THEN
   DUP [CHAR] e = IF DROP 27 EXIT THEN  DUP [CHAR] f = IF DROP 12 EXIT THEN
-  DUP [CHAR] l = IF DROP 10 EXIT THEN  DUP [CHAR] n = IF DROP 10 EXIT THEN
+  DUP [CHAR] l = IF DROP 10 EXIT THEN
   DUP [CHAR] q = IF DROP 34 EXIT THEN  DUP [CHAR] r = IF DROP 13 EXIT THEN
   DUP [CHAR] t = IF DROP 9 EXIT THEN   DUP [CHAR] v = IF DROP 11 EXIT THEN
   DUP [CHAR] z = IF DROP 0 EXIT THEN ;
@@ -56,7 +56,7 @@ CODE 2R@  ( -- x1 x2 ) ( R: x1 x2 -- x1 x2 )  \ CORE EXT
     REST NIP 0= IF SWAP - EXIT THEN  NEXT-CHAR
     DUP [CHAR] " = IF DROP SWAP - EXIT THEN
     DUP [CHAR] \ = IF DROP NEXT-CHAR
-      DUP [CHAR] m = IF DROP 13 OVER C! 1+ 10 ELSE
+      DUP [CHAR] m = OVER [CHAR] n = OR IF DROP 13 OVER C! 1+ 10 ELSE  \ CR LF
       DUP [CHAR] x = IF DROP HEX-DIGIT 16 * HEX-DIGIT + ELSE ESCAPE THEN THEN
     THEN OVER C! 1+
   AGAIN ;

@@ -12,7 +12,9 @@
 
 \ ---- STRING EXT: text substitution ---------------------------------------------
 \ REPLACES keeps each name as a word of the word list SUBSTITUTIONS whose body
-\ points to the counted text; SUBSTITUTE replaces %name% by it and %% by %.
+\ points to the counted text; SUBSTITUTE replaces %name% by it and %% by %,
+\ in one pass; a source overlapping the buffer is first copied to the top of
+\ the free dictionary space (n = -1 if the buffer overlaps that too).
 VOCABULARY SUBSTITUTIONS  ( -- ) \ the names REPLACES defined (not for searching)
 ' SUBSTITUTIONS >BODY CONSTANT SUBSTS  ( -- wid )
 : REPLACES  ( a1 u1 a2 u2 -- )  \ STRING EXT: %a2% becomes the text a1 u1
@@ -34,7 +36,13 @@ VARIABLE #SUBS  ( -- a ) \ substitutions made, -1 after an overflow
   1 /STRING  2DUP [CHAR] % SCAN DUP 0= IF 2DROP S" %" SUB-PUT EXIT THEN
   2SWAP DROP 2 PICK OVER -  ?DUP IF SUB-TEXT ELSE DROP S" %" SUB-PUT THEN
   1 /STRING ;
+: OVERLAP?  ( a1 u1 a2 u2 -- f )  \ do the two strings share a byte?
+  OVER + >R  ( a1 u1 a2 ; R: end2 )  -ROT OVER + ( a2 a1 end1 )
+  ROT U> SWAP R> U< AND ;
+: SUB-SOURCE  ( a1 u1 a2 u2 -- a1' u1 a2 u2 )  \ a source in the way goes to LIMIT-u1
+  2OVER 2OVER OVERLAP? IF 2SWAP LIMIT OVER - >R TUCK R@ SWAP MOVE R> SWAP 2SWAP THEN ;
 : SUBSTITUTE  ( a1 u1 a2 u2 -- a2 u3 n )  \ STRING EXT; n < 0: a2 u2 too small
+  SUB-SOURCE  2OVER 2OVER OVERLAP? IF 2SWAP 2DROP -1 EXIT THEN
   OVER + SUB-END !  DUP SUB-DST !  0 #SUBS !  >R
   BEGIN DUP WHILE
     OVER C@ [CHAR] % = IF SUB-PERCENT ELSE OVER 1 SUB-PUT 1 /STRING THEN
