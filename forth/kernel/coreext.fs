@@ -62,5 +62,5 @@ CODE 2R@  ( -- x1 x2 ) ( R: x1 x2 -- x1 x2 )  \ CORE EXT
   AGAIN ;
 : S\"  ( "ccc<quote>" -- a u )  \ CORE EXT, FILE EXT
   STATE @ IF ['] (S") ,  HERE 1+ ESC-PARSE DUP C, ALLOT ALIGN EXIT THEN
-  SBUF @ 128 XOR DUP SBUF ! SBUFS + >R  \ as S": one of two 128-byte buffers
+  NEXT-SBUF >R  \ as S": one of its buffers
   HERE DUP ESC-PARSE 128 MIN R@ SWAP DUP >R CMOVE 2R> ;  IMMEDIATE

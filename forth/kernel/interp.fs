@@ -113,11 +113,12 @@ VARIABLE NUM-CELLS  ( -- a ) \ 1 or 2: the number being converted
 : ,"  ( "ccc"" -- )  [CHAR] " PARSE S, ;
 : ."  ( "ccc"" -- )  ['] (.") , ," ;  IMMEDIATE COMPILE-ONLY
 : ABORT"  ( "ccc"" -- )  ['] (ABORT") , ," ;  IMMEDIATE COMPILE-ONLY
-CREATE SBUFS 256 ALLOT  ( -- a ) \ S" while interpreting: two buffers in turn
+CREATE SBUFS 512 ALLOT  ( -- a ) \ S" while interpreting: four buffers in turn
 VARIABLE SBUF  ( -- a ) \ offset of the buffer used last
+: NEXT-SBUF  ( -- a )  SBUF @ 128 + 511 AND DUP SBUF ! SBUFS + ;  \ 128 bytes
 : S"  ( "text<quote>" -- a u )
   STATE @ IF ['] (S") , ," EXIT THEN
-  SBUF @ 128 XOR DUP SBUF ! SBUFS +  >R
+  NEXT-SBUF >R
   [CHAR] " PARSE 128 MIN R@ SWAP DUP >R CMOVE 2R> ;  IMMEDIATE
 : [CHAR]  ( "c" -- )  CHAR POSTPONE LITERAL ;  IMMEDIATE COMPILE-ONLY
 : [']  ( "name" -- )  TICK POSTPONE LITERAL ;  IMMEDIATE COMPILE-ONLY
