@@ -104,8 +104,8 @@ VARIABLE DISARMED  ( -- a ) \ vector DISARM put back, -1 = none
 : DISCARD-DEFINITION  ( -- )  \ a definition cut short leaves nothing behind
   STATE @ IF COLON-LFA @ ?DUP IF UNLINK THEN THEN
   0 COLON-LFA !  TEMP-DEPTH @ IF TEMP-HERE @ DP !  0 TEMP-DEPTH ! THEN ;
-: CONTEXT-AFTER-ERROR  ( -- )  \ FORTH-79: CONTEXT := CURRENT; never an empty order
-  #ORDER @ 0= IF 1 #ORDER ! THEN  CURRENT @ CONTEXT ! ;
+: CONTEXT-AFTER-ERROR  ( -- )  \ FORTH-79: CONTEXT := CURRENT; an empty order: the boot one
+  #ORDER @ 0= IF ONLY ALSO THEN  CURRENT @ CONTEXT ! ;
 : RESET-AFTER-ERROR  ( -- )
   DISCARD-DEFINITION  POSTPONE [  0 BLK !  0 SRC-ID !  CONTEXT-AFTER-ERROR
   'ON-ERROR @ ?DUP IF EXECUTE THEN  S0 SP!  0 PRIORITY! ;
