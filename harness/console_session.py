@@ -2,7 +2,8 @@
 
 The user types to the FORTH (or, after ^E, to SIMH's sim> prompt) directly;
 the harness watches the keystrokes only to catch the way out: a line reading
-BYE, or ^D. Then it erases that line (^U, which both the FORTH and SIMH's
+BYE, or ^D, and the output for the halt of the FORTH's BYE word run within a
+line. Then it erases that line (^U, which both the FORTH and SIMH's
 prompt take as "kill line"), brings the FORTH back to its prompt if SIMH had
 it stopped, has it FLUSH its block buffers, and detaches the trace and the
 disk before quitting SIMH, so nothing typed into blocks is lost.
@@ -48,6 +49,32 @@ class LineWatcher:
                 self.line.clear()
             elif byte >= 32:
                 self.line.append(byte)
+        return data
+
+
+class HaltWatcher:
+    """Follows the console output to spot the HALT of the FORTH's BYE word (a
+    BYE inside a definition, or on a line with other words): SIMH reports
+    "HALT instruction, PC: <(BYE)+2>"; leaving then goes as for a typed BYE."""
+
+    def __init__(self, kernel_map=KERNEL.with_suffix(".map")):
+        self.marker = None
+        self.tail = b""
+        try:
+            for line in Path(kernel_map).read_text().splitlines():
+                parts = line.split()
+                if len(parts) == 2 and parts[1] == "(BYE)":
+                    self.marker = b"HALT instruction, PC: %06o" % (int(parts[0], 8) + 2)
+        except OSError:
+            pass                                 # no map: only a typed BYE leaves
+
+    def feed(self, data):
+        """Raise Leave when the output so far ends with BYE's halt report."""
+        if self.marker:
+            self.tail = (self.tail + data)[-2 * len(self.marker):]
+            if self.marker in self.tail:
+                self.tail = b""
+                raise Leave
         return data
 
 
@@ -123,7 +150,8 @@ def session(simulator, disk, trace=None, fast=False):
         child.delaybeforesend = None
         watcher = LineWatcher()
         try:
-            child.interact(escape_character=None, input_filter=watcher.feed)
+            child.interact(escape_character=None, input_filter=watcher.feed,
+                           output_filter=HaltWatcher().feed)
         except Leave:
             flushed = leave(child, trace)
             say(("blocks flushed; " if flushed else "") + f"disk {disk} detached. Bye.")

@@ -82,3 +82,18 @@ def test_missing_disk_is_a_clear_error(tmp_path):
     child.close()
     assert "none.dsk: no such disk image" in child.before
     assert child.exitstatus == 1
+
+
+def test_bye_inside_a_definition_leaves_like_typed_bye(tmp_path):
+    """The FORTH's BYE word halts the simulator at (BYE); the console sees the
+    halt, continues the FORTH, FLUSHes and detaches as for a typed BYE."""
+    disk = tmp_path / "work.dsk"
+    shutil.copyfile(PRISTINE, disk)
+    child = console(disk)
+    write_block_word(child, "left by the BYE word")
+    child.send(": LEAVE-NOW 1 . BYE ; LEAVE-NOW\r")
+    child.expect(r"blocks flushed; disk .* detached\. Bye\.")
+    child.expect(pexpect.EOF)
+    child.close()
+    assert child.exitstatus == 0
+    assert block_text(disk, BLOCK).startswith(b"left by the BYE word")
