@@ -82,6 +82,9 @@ def test_core_recurse_source_id_and_odd_here(forth):
     assert forth.send("HERE 1 AND 0= IF 0 C, THEN HERE 1 AND . 1 IF 5 . THEN HERE 1 AND .") \
         == "1 5 1 "
     forth.send("ALIGN")
+    # a parsing word that misses names the missing word, not itself (issue 9)
+    for line in ("SEE nosuch", "' nosuch", "FORGET nosuch", ": X POSTPONE nosuch ;"):
+        assert forth.reply(line).error == "undefined word: nosuch", line
 
 
 # ---- EXCEPTION --------------------------------------------------------------

@@ -33,6 +33,15 @@ def block_text(disk, n):
     return disk.read_bytes()[1024 * n:1024 * n + 64]
 
 
+def expect_left_with_flush(child, disk, text):
+    """The console flushed, detached, exited 0, and the block holds text."""
+    child.expect(r"blocks flushed; disk .* detached\. Bye\.")
+    child.expect(pexpect.EOF)
+    child.close()
+    assert child.exitstatus == 0
+    assert block_text(disk, BLOCK).startswith(text)
+
+
 def test_console_command_simh_prompt_and_bye_flushes(tmp_path):
     disk = tmp_path / "work.dsk"
     shutil.copyfile(PRISTINE, disk)
@@ -51,11 +60,7 @@ def test_console_command_simh_prompt_and_bye_flushes(tmp_path):
     write_block_word(child, "typed at the console")
     assert not block_text(disk, BLOCK).startswith(b"typed")  # still in a buffer
     child.send("BYE\r")
-    child.expect(r"blocks flushed; disk .* detached\. Bye\.")
-    child.expect(pexpect.EOF)
-    child.close()
-    assert child.exitstatus == 0
-    assert block_text(disk, BLOCK).startswith(b"typed at the console")
+    expect_left_with_flush(child, disk, b"typed at the console")
     assert (tmp_path / "t.csv").read_text().startswith("time_s,axis,")
 
 
@@ -67,11 +72,7 @@ def test_ctrl_d_from_the_simh_prompt_also_flushes(tmp_path):
     child.send("\x05")
     child.expect("sim> ")
     child.send("\x04")                                   # ^D at sim>: leave all the same
-    child.expect(r"blocks flushed; disk .* detached\. Bye\.")
-    child.expect(pexpect.EOF)
-    child.close()
-    assert child.exitstatus == 0
-    assert block_text(disk, BLOCK).startswith(b"left with control-D")
+    expect_left_with_flush(child, disk, b"left with control-D")
 
 
 def test_missing_disk_is_a_clear_error(tmp_path):
@@ -92,8 +93,4 @@ def test_bye_inside_a_definition_leaves_like_typed_bye(tmp_path):
     child = console(disk)
     write_block_word(child, "left by the BYE word")
     child.send(": LEAVE-NOW 1 . BYE ; LEAVE-NOW\r")
-    child.expect(r"blocks flushed; disk .* detached\. Bye\.")
-    child.expect(pexpect.EOF)
-    child.close()
-    assert child.exitstatus == 0
-    assert block_text(disk, BLOCK).startswith(b"left by the BYE word")
+    expect_left_with_flush(child, disk, b"left by the BYE word")
