@@ -1,21 +1,21 @@
 \ forth/kernel/interp.fs: text interpreter, compiler, vocabularies, errors, QUIT.
 
 \ ---- the input source ---------------------------------------------------------
-: SOURCE  ( -- a u )  BLK @ IF BLK @ (BLOCK) 1024 ELSE SRC 2@ THEN ;  \ (BLOCK): disk.fs
+: SOURCE  ( -- a u )  BLK @ IF BLK @ (BLOCK) 1024 ELSE SRC 2@ THEN ;  \ CORE: (BLOCK): disk.fs
 : REST  ( -- a u )  \ unparsed part of the source
   SOURCE >IN @ OVER MIN /STRING ;
-: PARSE  ( c -- a u )
+: PARSE  ( c -- a u )  \ CORE EXT
   >R REST OVER SWAP R> SCAN  ( a a' u' )  0<> 1 AND >R  OVER -  DUP R> + >IN +! ;
-: PARSE-NAME  ( -- a u )
+: PARSE-NAME  ( -- a u )  \ CORE EXT
   REST BL SKIP DROP SOURCE DROP - >IN !  BL PARSE ;
-: WORD  ( c -- ca )  \ counted string at HERE, a blank after it
+: WORD  ( c -- ca )  \ CORE: counted string at HERE, a blank after it
   >R REST R@ SKIP DROP SOURCE DROP - >IN !  R> PARSE
   DUP HERE C! HERE 1+ SWAP CMOVE  BL HERE COUNT + C!  HERE ;
-: CHAR  ( "c" -- c )  PARSE-NAME DROP C@ ;
-: (  ( "text<paren>" -- )  [CHAR] ) PARSE 2DROP ;  IMMEDIATE
-: \  ( "line" -- )  \ in a block: to the end of the 64-character line
+: CHAR  ( "c" -- c )  PARSE-NAME DROP C@ ;  \ CORE
+: (  ( "text<paren>" -- )  [CHAR] ) PARSE 2DROP ;  IMMEDIATE  \ CORE
+: \  ( "line" -- )  \ CORE EXT, BLOCK EXT: in a block, to the end of the 64-character line
   BLK @ IF >IN @ 63 + -64 AND >IN ! ELSE SOURCE NIP >IN ! THEN ;  IMMEDIATE
-: .(  ( "text<paren>" -- )  [CHAR] ) PARSE TYPE ;  IMMEDIATE
+: .(  ( "text<paren>" -- )  [CHAR] ) PARSE TYPE ;  IMMEDIATE  \ CORE EXT
 
 \ ---- numbers: Forth-2012 3.4.1.3 plus the project's trailing O ----------------
 \ 'c' a character; a prefix # $ % (decimal, hex, binary) for this number only;
@@ -25,7 +25,7 @@
   UPC DUP [CHAR] 9 > IF DUP [CHAR] A < IF DROP FALSE EXIT THEN 7 - THEN
   [CHAR] 0 - DUP BASE @ U< IF TRUE ELSE DROP FALSE THEN ;
 : UD*  ( ud u -- ud' )  DUP >R UM* DROP SWAP R> UM* ROT + ;
-: >NUMBER  ( ud a u -- ud' a' u' )
+: >NUMBER  ( ud a u -- ud' a' u' )  \ CORE
   BEGIN DUP WHILE OVER C@ DIGIT? WHILE
     >R 2SWAP BASE @ UD* R> 0 D+ 2SWAP 1 /STRING
   REPEAT THEN ;
@@ -86,9 +86,9 @@ VARIABLE NUM-CELLS  ( -- a ) \ 1 or 2: the number being converted
 \ mismatch is error -22 and nothing half-built stays in the dictionary.
 : ?PAIRS  ( tag expected -- )  <> IF -22 THROW THEN ;
 : ?COMP  ( -- )  STATE @ 0= IF -14 THROW THEN ;
-: LITERAL  ( n -- )  ['] (LIT) , , ;  IMMEDIATE COMPILE-ONLY
-: [  ( -- )  FALSE STATE ! ;  IMMEDIATE
-: ]  ( -- )  TRUE STATE ! ;
+: LITERAL  ( n -- )  ['] (LIT) , , ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: [  ( -- )  FALSE STATE ! ;  IMMEDIATE  \ CORE
+: ]  ( -- )  TRUE STATE ! ;  \ CORE
 : NUMBER  ( a u -- n | d )  \ a number for the interpreter, compiled when compiling
   NUMBER? DUP 0= IF -13 THROW THEN
   STATE @ IF 2 = IF SWAP POSTPONE LITERAL THEN POSTPONE LITERAL ELSE DROP THEN ;
@@ -96,41 +96,41 @@ VARIABLE NUM-CELLS  ( -- a ) \ 1 or 2: the number being converted
 : >RESOLVE  ( orig 1 -- )  1 ?PAIRS HERE SWAP ! ;
 : <MARK  ( -- dest 2 )  HERE 2 ;
 : <RESOLVE  ( dest 2 -- )  2 ?PAIRS , ;
-: IF  ( -- orig )  ['] ?BRANCH , >MARK ;  IMMEDIATE COMPILE-ONLY
-: ELSE  ( orig -- orig' )  ['] BRANCH , >MARK 2SWAP >RESOLVE ;  IMMEDIATE COMPILE-ONLY
-: THEN  ( orig -- )  >RESOLVE ;  IMMEDIATE COMPILE-ONLY
-: BEGIN  ( -- dest )  <MARK ;  IMMEDIATE COMPILE-ONLY
-: UNTIL  ( dest -- )  ['] ?BRANCH , <RESOLVE ;  IMMEDIATE COMPILE-ONLY
+: IF  ( -- orig )  ['] ?BRANCH , >MARK ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: ELSE  ( orig -- orig' )  ['] BRANCH , >MARK 2SWAP >RESOLVE ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: THEN  ( orig -- )  >RESOLVE ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: BEGIN  ( -- dest )  <MARK ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: UNTIL  ( dest -- )  ['] ?BRANCH , <RESOLVE ;  IMMEDIATE COMPILE-ONLY  \ CORE
 : END  ( dest -- )  ['] ?BRANCH , <RESOLVE ;  IMMEDIATE COMPILE-ONLY
-: AGAIN  ( dest -- )  ['] BRANCH , <RESOLVE ;  IMMEDIATE COMPILE-ONLY
-: WHILE  ( dest -- orig dest )  ['] ?BRANCH , >MARK 2SWAP ;  IMMEDIATE COMPILE-ONLY
-: REPEAT  ( orig dest -- )  ['] BRANCH , <RESOLVE >RESOLVE ;  IMMEDIATE COMPILE-ONLY
-: DO  ( -- do-sys )  ['] (DO) , HERE 0 , 3 ;  IMMEDIATE COMPILE-ONLY
-: ?DO  ( -- do-sys )  ['] (?DO) , HERE 0 , 3 ;  IMMEDIATE COMPILE-ONLY
-: LOOP  ( do-sys -- )  3 ?PAIRS ['] (LOOP) , DUP 2+ , HERE SWAP ! ;  IMMEDIATE COMPILE-ONLY
-: +LOOP  ( do-sys -- )  3 ?PAIRS ['] (+LOOP) , DUP 2+ , HERE SWAP ! ;  IMMEDIATE COMPILE-ONLY
+: AGAIN  ( dest -- )  ['] BRANCH , <RESOLVE ;  IMMEDIATE COMPILE-ONLY  \ CORE EXT
+: WHILE  ( dest -- orig dest )  ['] ?BRANCH , >MARK 2SWAP ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: REPEAT  ( orig dest -- )  ['] BRANCH , <RESOLVE >RESOLVE ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: DO  ( -- do-sys )  ['] (DO) , HERE 0 , 3 ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: ?DO  ( -- do-sys )  ['] (?DO) , HERE 0 , 3 ;  IMMEDIATE COMPILE-ONLY  \ CORE EXT
+: LOOP  ( do-sys -- )  3 ?PAIRS ['] (LOOP) , DUP 2+ , HERE SWAP ! ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: +LOOP  ( do-sys -- )  3 ?PAIRS ['] (+LOOP) , DUP 2+ , HERE SWAP ! ;  IMMEDIATE COMPILE-ONLY  \ CORE
 : S,  ( a u -- )  DUP C, HERE OVER ALLOT SWAP CMOVE ALIGN ;  \ a counted string, aligned
 : ,"  ( "ccc"" -- )  [CHAR] " PARSE S, ;
-: ."  ( "ccc"" -- )  ['] (.") , ," ;  IMMEDIATE COMPILE-ONLY
-: ABORT"  ( "ccc"" -- )  ['] (ABORT") , ," ;  IMMEDIATE COMPILE-ONLY
+: ."  ( "ccc"" -- )  ['] (.") , ," ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: ABORT"  ( "ccc"" -- )  ['] (ABORT") , ," ;  IMMEDIATE COMPILE-ONLY  \ CORE, EXCEPTION EXT
 CREATE SBUFS 512 ALLOT  ( -- a ) \ S" while interpreting: four buffers in turn
 VARIABLE SBUF  ( -- a ) \ offset of the buffer used last
 : NEXT-SBUF  ( -- a )  SBUF @ 128 + 511 AND DUP SBUF ! SBUFS + ;  \ 128 bytes
-: S"  ( "text<quote>" -- a u )
+: S"  ( "text<quote>" -- a u )  \ CORE
   STATE @ IF ['] (S") , ," EXIT THEN
   NEXT-SBUF >R
   [CHAR] " PARSE 128 MIN R@ SWAP DUP >R CMOVE 2R> ;  IMMEDIATE
-: [CHAR]  ( "c" -- )  CHAR POSTPONE LITERAL ;  IMMEDIATE COMPILE-ONLY
-: [']  ( "name" -- )  TICK POSTPONE LITERAL ;  IMMEDIATE COMPILE-ONLY
-: [COMPILE]  ( "name" -- )  TICK , ;  IMMEDIATE COMPILE-ONLY
+: [CHAR]  ( "c" -- )  CHAR POSTPONE LITERAL ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: [']  ( "name" -- )  TICK POSTPONE LITERAL ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: [COMPILE]  ( "name" -- )  TICK , ;  IMMEDIATE COMPILE-ONLY  \ CORE EXT
 \ ' is FORTH-79's: IMMEDIATE, and inside a definition it compiles the address
 \ as a literal (block 1008: : Install.Int.Servo ... ' Interrupt.Servo 100O ! ...).
 \ Forth-94 programs use ['] there; TICK is the plain parsing word.
-: '  ( "name" -- xt )  TICK STATE @ IF POSTPONE LITERAL THEN ;  IMMEDIATE
-: POSTPONE  ( "name" -- )
+: '  ( "name" -- xt )  TICK STATE @ IF POSTPONE LITERAL THEN ;  IMMEDIATE  \ CORE
+: POSTPONE  ( "name" -- )  \ CORE
   PARSE-NAME ?NAME  DUP NAME> SWAP C@ 128 AND IF , ELSE POSTPONE LITERAL ['] COMPILE, , THEN ;
   IMMEDIATE COMPILE-ONLY
-: RECURSE  ( -- )  LAST-XT @ , ;  IMMEDIATE COMPILE-ONLY
+: RECURSE  ( -- )  LAST-XT @ , ;  IMMEDIATE COMPILE-ONLY  \ CORE
 
 \ ---- headers and defining words ------------------------------------------------------
 VARIABLE COLON-LFA  ( -- a ) \ header of the definition being compiled
@@ -146,40 +146,40 @@ DOCOL CONSTANT 'DOCOL  ( -- a )
 DOVAR CONSTANT 'DOVAR  ( -- a )
 DOCON CONSTANT 'DOCON  ( -- a )
 DODOES CONSTANT 'DODOES  ( -- a )
-: IMMEDIATE  ( -- )  LAST @ DUP C@ 128 OR SWAP C! ;
+: IMMEDIATE  ( -- )  LAST @ DUP C@ 128 OR SWAP C! ;  \ CORE
 : COMPILE-ONLY  ( -- )  LAST @ DUP C@ 64 OR SWAP C! ;
 : SMUDGE  ( -- )  LAST @ DUP C@ 32 OR SWAP C! ;
 : REVEAL  ( -- )  LAST @ DUP C@ 32 INVERT AND SWAP C! ;
-: CREATE  ( "name" -- )  ?END-CODE PARSE-NAME HEADER, 'DOVAR JSR-W CF, ;
-: VARIABLE  ( "name" -- )  CREATE 0 , ;
-: CONSTANT  ( x "name" -- )  ?END-CODE PARSE-NAME HEADER, 'DOCON JSR-W CF, , ;
-: CON  ( x "name" -- )  CONSTANT ;
-: VAR  ( x "name" -- )  CREATE , ;
-: ARRAY  ( n "name" -- )  CREATE CELLS DUP ALLOT HERE OVER - SWAP ERASE ;
+: CREATE  ( "name" -- )  ?END-CODE PARSE-NAME HEADER, 'DOVAR JSR-W CF, ;  \ CORE
+: VARIABLE  ( "name" -- )  CREATE 0 , ;  \ CORE
+: CONSTANT  ( x "name" -- )  ?END-CODE PARSE-NAME HEADER, 'DOCON JSR-W CF, , ;  \ CORE
+: CON  ( x "name" -- )  CONSTANT ;  \ the appendix's constant
+: VAR  ( x "name" -- )  CREATE , ;  \ the appendix's variable with a value
+: ARRAY  ( n "name" -- )  CREATE CELLS DUP ALLOT HERE OVER - SWAP ERASE ;  \ the appendix's n cells
 : (DOES>)  ( -- )  R> LAST @ NAME> 2+ ! ;  COMPILE-ONLY
-: DOES>  ( -- )  ['] (DOES>) , JSR-IP , 'DODOES , ;  IMMEDIATE COMPILE-ONLY
-: VALUE  ( x "name" -- )  CONSTANT ;
-: TO  ( x "name" -- )
+: DOES>  ( -- )  ['] (DOES>) , JSR-IP , 'DODOES , ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: VALUE  ( x "name" -- )  CONSTANT ;  \ CORE EXT (TO stores into it)
+: TO  ( x "name" -- )  \ CORE EXT, DOUBLE EXT
   TICK >BODY STATE @ IF POSTPONE LITERAL ['] ! , ELSE ! THEN ;  IMMEDIATE
 : VOC-NAME  ( wid -- nfa | 0 )  10 + @ ;  \ 0: a WORDLIST, not a VOCABULARY
 \ FORTH-79: : sets CONTEXT to CURRENT. Done only when both are vocabularies, so
 \ that word lists and search orders of standard programs stay as they set them.
 : COLON-CONTEXT  ( -- )
   CONTEXT @ VOC-NAME CURRENT @ VOC-NAME AND IF CURRENT @ CONTEXT ! THEN ;
-: :  ( "name" -- colon-sys )  \ also ends an open CODE word (block 1008)
+: :  ( "name" -- colon-sys )  \ CORE: also ends an open CODE word (block 1008)
   ?END-CODE  COLON-CONTEXT  ALIGN HERE COLON-LFA !
   PARSE-NAME HEADER, SMUDGE  HERE LAST-XT !  'DOCOL JSR-IP CF,  4 ] ;
 : :NONAME  ( -- xt colon-sys )  \ CORE EXT
   0 COLON-LFA !  ALIGN HERE DUP LAST-XT !  'DOCOL JSR-IP CF, 4 ] ;
-: ;  ( colon-sys -- )
+: ;  ( colon-sys -- )  \ CORE
   ['] EXIT ,  4 ?PAIRS  COLON-LFA @ IF REVEAL THEN  0 COLON-LFA !  POSTPONE [ ;
   IMMEDIATE COMPILE-ONLY
 : WORDLIST,  ( nfa -- wid )  \ an empty word list, linked from VOC-LINK
   ALIGN HERE  0 , 0 , 0 , 0 ,  HERE VOC-LINK @ , VOC-LINK !  SWAP , ;
 : VOCABULARY  ( "name" -- )  \ FORTH-79: the name replaces CONTEXT @ (immediate)
   CREATE LAST @ WORDLIST, DROP  IMMEDIATE  DOES> CONTEXT ! ;
-VOCABULARY FORTH  ( -- ) \ the kernel's vocabulary (SEARCH EXT)
+VOCABULARY FORTH  ( -- ) \ SEARCH EXT: the kernel's vocabulary
 ' FORTH >BODY CONSTANT FORTH-BODY  ( -- a )
-VOCABULARY ASSEMBLER  ( -- ) \ CODE's vocabulary (TOOLS EXT)
+VOCABULARY ASSEMBLER  ( -- ) \ TOOLS EXT: CODE's vocabulary
 : DEFINITIONS  ( -- )  CONTEXT @ CURRENT ! ;  \ SEARCH
 \ CODE END-CODE ;CODE: forth/kernel/code.fs (they need the resident assembler)

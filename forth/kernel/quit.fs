@@ -28,7 +28,7 @@ VARIABLE TEMP-HERE  ( -- a ) \ HERE before it, put back afterwards
     ELSE NUMBER THEN
     ?STACK TEMP-END?
   REPEAT 2DROP ;
-: EVALUATE  ( a u -- )
+: EVALUATE  ( a u -- )  \ CORE, BLOCK
   SRC 2@ 2>R  >IN @ >R  BLK @ >R  SRC-ID @ >R
   SRC 2!  0 >IN !  0 BLK !  -1 SRC-ID !  INTERPRET
   R> SRC-ID !  R> BLK !  R> >IN !  2R> SRC 2! ;
@@ -113,10 +113,10 @@ VARIABLE DISARMED  ( -- a ) \ vector DISARM put back, -1 = none
 \ ---- QUIT --------------------------------------------------------------------------
 : .LOST  ( -- )  \ say so when the console ring overflowed
   RXLOST @ ?DUP IF CR U. ." characters lost: typed too far ahead" CR  0 RXLOST ! THEN ;
-: QUERY  ( -- )  \ a line from the terminal becomes the source
+: QUERY  ( -- )  \ CORE EXT: a line from the terminal becomes the source
   TIB TIB-SIZE 1- ACCEPT  TIB SWAP SRC 2!  0 >IN !  0 BLK !  0 SRC-ID !  SPACE .LOST ;
 : INTERPRET-LINE  ( -- )  QUERY INTERPRET ;
-: QUIT  ( -- )  \ read, interpret, report: forever
+: QUIT  ( -- )  \ CORE: read, interpret, report: forever
   RP0 RP!  0 HANDLER !  POSTPONE [  0 BLK !  0 PRIORITY!
   BEGIN
     ['] INTERPRET-LINE CATCH ?DUP IF .ERROR RESET-AFTER-ERROR ELSE ."  ok" CR THEN
