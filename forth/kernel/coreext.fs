@@ -40,7 +40,7 @@ CODE 2R@  ( -- x1 x2 ) ( R: x1 x2 -- x1 x2 )  \ CORE EXT
 : SAVE-INPUT  ( -- x1 .. x5 5 )  \ CORE EXT
   SRC 2@ >IN @ BLK @ SOURCE-ID 5 ;
 : RESTORE-INPUT  ( x1 .. xn n -- f )  \ CORE EXT: f false when restored
-  DUP 5 <> IF 0 ?DO DROP LOOP TRUE EXIT THEN DROP
+  DUP 5 <> IF DEPTH 1- MIN 0 MAX 0 ?DO DROP LOOP TRUE EXIT THEN DROP  \ not ours
   SRC-ID ! BLK ! >IN ! SRC 2! FALSE ;
 : ESCAPE  ( c -- c' )  \ the character \c stands for in S\" (\m \n \x: ESC-PARSE)
   DUP [CHAR] a = IF DROP 7 EXIT THEN   DUP [CHAR] b = IF DROP 8 EXIT THEN

@@ -127,7 +127,7 @@ CREATE CUR-BLK  ( -- a ) -1 ,   \ the block UPDATE marks, -1 = none
 \ ---- loading ---------------------------------------------------------------
 : LOAD ( blk -- ) \ BLOCK: interpret block blk, then continue where we were
    DUP 0= ABORT" block 0 cannot be loaded"
-   DUP (BLOCK) DROP                  \ a bad block fails here, source unchanged
+   DUP BLOCK DROP   \ a bad block fails here, source unchanged; UPDATE now marks blk
    BLK @ >R >IN @ >R SRC-ID @ >R  BLK ! 0 >IN ! 0 SRC-ID !
    INTERPRET  R> SRC-ID ! R> >IN ! R> BLK ! ;
 : THRU ( blk1 blk2 -- ) 1+ SWAP ?DO I LOAD LOOP ;  \ BLOCK EXT

@@ -273,3 +273,33 @@ def test_facility_time_from_the_simulated_clock(forth):
     sec = forth.send("TIME&DATE 2DROP 2DROP DROP .")
     assert sec == "1 "
     assert forth.send("EKEY? . 65 EKEY>CHAR . . EMIT? .") == "0 -1 65 -1 "
+
+
+# ---- BLOCK and BLOCK EXT ---------------------------------------------------------
+def put_block(forth, n, text):
+    forth.send(f'{n} BUFFER 1024 BLANK  S" {text}" {n} BLOCK SWAP CMOVE UPDATE')
+
+
+def test_block_refill_save_input_and_update(forth):
+    # REFILL in a block goes on with the next block
+    put_block(forth, 1601, "1 2 REFILL 4 5")
+    put_block(forth, 1602, "10 11")
+    assert forth.send("1601 LOAD .S 2DROP 2DROP DROP") == "<5> 1 2 -1 10 11 "
+    # SAVE-INPUT in one block, REFILL into the next, RESTORE-INPUT back: once
+    forth.send("VARIABLE PASSES  0 PASSES !")
+    # (REFILL's and RESTORE-INPUT's flags stay: the source changes under them)
+    put_block(forth, 1603, "SAVE-INPUT REFILL")
+    put_block(forth, 1604, "DROP 1 PASSES +! PASSES @ 2 < [IF] RESTORE-INPUT [ELSE] [THEN] 7")
+    assert forth.send("1603 LOAD PASSES @ . .S 2DROP") == "2 <2> 0 7 "
+    # LOAD makes the loaded block the one UPDATE marks
+    put_block(forth, 1605, "SOURCE DROP")
+    forth.send("FLUSH 1606 BUFFER 1024 BLANK  1605 LOAD  CHAR x SWAP C! UPDATE FLUSH")
+    assert forth.send("1605 BLOCK C@ EMIT 1606 BLOCK C@ .") == "x0 "
+    # THRU loads in order; BLK names the block being loaded
+    put_block(forth, 1607, "BLK")
+    put_block(forth, 1608, "@")
+    assert forth.send("1607 1608 THRU .") == "1608 "
+    # \ in a block skips to the end of its 64-character line; >IN moves within the block
+    forth.send("1609 BUFFER 1024 BLANK  S\" 1 \\ 2\" 1609 BLOCK SWAP CMOVE"
+               "  S\" 3 2 >IN +! 4 5\" 1609 BLOCK 64 + SWAP CMOVE UPDATE")
+    assert forth.send("1609 LOAD .S 2DROP DROP") == "<3> 1 3 5 "
