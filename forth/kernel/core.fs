@@ -7,6 +7,7 @@
 S0 CONSTANT S0  ( -- a ) \ empty data stack
 RP0 CONSTANT RP0  ( -- a ) \ empty return stack
 LIMIT CONSTANT LIMIT  ( -- a ) \ end of the dictionary space
+LIMIT VAR DICT-END  ( -- a ) \ the dictionary ends here: LIMIT, or the heap's start (heap.fs)
 BUFFERS CONSTANT BUFFERS  ( -- a ) \ block buffer area (disk.fs)
 BUFFERS-SIZE CONSTANT BUFFERS-SIZE  ( -- n )
 TIB0 CONSTANT TIB  ( -- a )  \ CORE EXT
@@ -88,7 +89,7 @@ VARIABLE ABORT-MSG  ( -- a ) \ counted message of the last ABORT"
 
 \ ---- the dictionary ----------------------------------------------------------------
 : HERE  ( -- a )  DP @ ;  \ CORE
-: UNUSED  ( -- n )  LIMIT HERE - 160 - ;  \ CORE EXT
+: UNUSED  ( -- n )  DICT-END @ HERE - 160 - ;  \ CORE EXT
 : ALLOT  ( n -- )  \ CORE: n signed; nothing allotted on an error
   DUP 0< IF DUP NEGATE HERE FENCE @ - U> IF -9 THROW THEN  \ never below the kernel
   ELSE DUP UNUSED U> IF -8 THROW THEN THEN  DP +! ;

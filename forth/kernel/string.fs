@@ -39,8 +39,8 @@ VARIABLE #SUBS  ( -- a ) \ substitutions made, -1 after an overflow
 : OVERLAP?  ( a1 u1 a2 u2 -- f )  \ do the two strings share a byte?
   OVER + >R  ( a1 u1 a2 ; R: end2 )  -ROT OVER + ( a2 a1 end1 )
   ROT U> SWAP R> U< AND ;
-: SUB-SOURCE  ( a1 u1 a2 u2 -- a1' u1 a2 u2 )  \ a source in the way goes to LIMIT-u1
-  2OVER 2OVER OVERLAP? IF 2SWAP LIMIT OVER - >R TUCK R@ SWAP MOVE R> SWAP 2SWAP THEN ;
+: SUB-SOURCE  ( a1 u1 a2 u2 -- a1' u1 a2 u2 )  \ a source in the way goes below DICT-END
+  2OVER 2OVER OVERLAP? IF 2SWAP DICT-END @ OVER - >R TUCK R@ SWAP MOVE R> SWAP 2SWAP THEN ;
 : SUBSTITUTE  ( a1 u1 a2 u2 -- a2 u3 n )  \ STRING EXT; n < 0: a2 u2 too small
   SUB-SOURCE  2OVER 2OVER OVERLAP? IF 2SWAP 2DROP -1 EXIT THEN
   OVER + SUB-END !  DUP SUB-DST !  0 #SUBS !  >R

@@ -22,6 +22,7 @@ s" forth/kernel/double.fs" kernel
 s" forth/kernel/string.fs" kernel
 s" forth/kernel/toolsext.fs" kernel
 s" forth/kernel/facility.fs" kernel
+s" forth/kernel/heap.fs" kernel
 s" forth/kernel/disk.fs" file-exists? [if]
   s" forth/kernel/disk.fs" kernel
 [else]

@@ -303,3 +303,23 @@ def test_block_refill_save_input_and_update(forth):
     forth.send("1609 BUFFER 1024 BLANK  S\" 1 \\ 2\" 1609 BLOCK SWAP CMOVE"
                "  S\" 3 2 >IN +! 4 5\" 1609 BLOCK 64 + SWAP CMOVE UPDATE")
     assert forth.send("1609 LOAD .S 2DROP DROP") == "<3> 1 3 5 "
+
+
+# ---- MEMORY -----------------------------------------------------------------------
+def test_memory_allocate_free_resize(forth):
+    # the first ALLOCATE takes the 4096-byte heap from the top of the dictionary space
+    forth.send("VARIABLE A1  VARIABLE A2  VARIABLE A3  0 VALUE BEFORE  0 VALUE HERE0")
+    forth.send("UNUSED TO BEFORE  HERE TO HERE0")
+    assert forth.send("100 ALLOCATE . A1 ! HERE HERE0 = . BEFORE UNUSED - .") == "0 -1 4096 "
+    assert forth.send("A1 @ 1 AND . 1000 ALLOCATE . A2 ! 2000 ALLOCATE . A3 !") == "0 0 0 "
+    assert forth.send("1000 ALLOCATE NIP .") == "-59 "  # 4096 - 102 - 1002 - 2002 left
+    # freed neighbours join again: after FREE of the first two, 1100 bytes fit there
+    assert forth.send("A1 @ FREE . A2 @ FREE . 1100 ALLOCATE . A1 @ = .") == "0 0 0 -1 "
+    assert forth.send("A1 @ FREE . A1 @ FREE . HERE FREE .") == "0 -60 -60 "
+    # RESIZE keeps the data: in place when the space after it is free, else moved
+    forth.send("S\" kept\" A3 @ SWAP MOVE")
+    assert forth.send("A3 @ 10 RESIZE . A3 @ = .") == "0 -1 "
+    assert forth.send("1200 ALLOCATE . A2 !  A3 @ 500 RESIZE . DUP A3 @ <> . DUP A3 ! 4 TYPE") \
+        == "0 0 -1 kept"
+    assert forth.send("A3 @ -1 RESIZE . A3 @ = . -1 ALLOCATE NIP .") == "-61 -1 -59 "
+    assert forth.send("A3 @ FREE . A2 @ FREE . 4000 ALLOCATE . FREE .") == "0 0 0 0 "
