@@ -23,8 +23,11 @@ CODE 2R@  ( -- x1 x2 ) ( R: x1 x2 -- x1 x2 )  \ CORE EXT
 : DEFER  ( "name" -- )  CREATE ['] NO-ACTION ,  DOES> @ EXECUTE ;  \ CORE EXT
 : DEFER@  ( xt1 -- xt2 )  >BODY @ ;  \ CORE EXT
 : DEFER!  ( xt2 xt1 -- )  >BODY ! ;  \ CORE EXT
+137O CONSTANT JMP-ABS  ( -- op ) \ JMP @#a: a SYNONYM's code field (toolsext.fs)
+: SYNONYM>  ( xt -- xt' )  \ through SYNONYMs to the word itself
+  BEGIN DUP @ JMP-ABS = WHILE 2+ @ REPEAT ;
 : TICK-DOES  ( i*x xt "name" -- j*x )  \ xt on name's xt now, or compiled that way
-  TICK STATE @ IF POSTPONE LITERAL COMPILE, ELSE SWAP EXECUTE THEN ;
+  TICK SYNONYM> STATE @ IF POSTPONE LITERAL COMPILE, ELSE SWAP EXECUTE THEN ;
 : IS  ( xt "name" -- )  ['] DEFER! TICK-DOES ;  IMMEDIATE  \ CORE EXT
 : ACTION-OF  ( "name" -- xt )  ['] DEFER@ TICK-DOES ;  IMMEDIATE  \ CORE EXT
 : VALUE!  ( x | x1 x2 xt -- )  \ a VALUE is a constant, a 2VALUE a DOES> child

@@ -47,7 +47,7 @@ CODE NR>  ( -- i*x n ) ( R: i*x n -- )  \ TOOLS EXT
 : TRAVERSE-WORDLIST  ( i*x xt wid -- j*x )  \ TOOLS EXT: xt ( nt -- f ) per word
   DUP 8 + SWAP DO  I @ TRAVERSE-CHAIN 0= IF DROP UNLOOP EXIT THEN  2 +LOOP DROP ;
 : SYNONYM  ( "newname" "oldname" -- )  \ TOOLS EXT: code field JMP @#old
-  ?END-CODE  PARSE-NAME PARSE-NAME ?NAME >R  HEADER,  137O ,  R@ NAME> ,
+  ?END-CODE  PARSE-NAME PARSE-NAME ?NAME >R  HEADER,  JMP-ABS ,  R@ NAME> ,
   R> C@ 192 AND  LAST @ DUP C@ ROT OR SWAP C! ;
 
 \ ---- BYE: the simulator stops at (BYE)'s HALT; the console harness sees it there

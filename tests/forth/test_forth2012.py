@@ -125,6 +125,8 @@ def test_core_ext_case_defer_value(forth):
     assert forth.send("4 ACT .") == "5 "
     forth.send("10 VALUE V1  : SET-V1 TO V1 ;")
     assert forth.send("V1 . 20 TO V1 V1 . 30 SET-V1 V1 .") == "10 20 30 "
+    forth.send("SYNONYM V2 V1  SYNONYM ACT2 ACT")  # TO and IS reach through a SYNONYM
+    assert forth.send("40 TO V2 V1 . V2 . ' 1- IS ACT2 5 ACT .") == "40 40 4 "
 
 
 def test_core_ext_strings_and_buffers(forth):
