@@ -59,6 +59,20 @@ def test_a_line_that_never_finishes_is_stopped_in_simulated_time(tmp_path):
     assert f"{script}:2: the simulator stopped: no prompt within 0.5 simulated seconds" in r.stderr
 
 
+def test_bye_ends_the_session(tmp_path):
+    """The FORTH's BYE (FLUSH, then its HALT) ends a scripted run as it ends the
+    console: a clean end when it is the last line, a failure naming what was left."""
+    script = tmp_path / "s.script"
+    script.write_text("1 .\n: DONE 2 . BYE ; DONE\n")
+    r = harness("run", script)
+    assert r.returncode == 0, r.stderr
+    assert (tmp_path / "s.transcript").read_text().endswith(": DONE 2 . BYE ; DONE 2 ")
+    script.write_text("1 .\nBYE\n3 .\n")
+    r = harness("run", script)
+    assert r.returncode == 1
+    assert f"{script}:2: BYE ended the session; 1 later steps not run" in r.stderr
+
+
 def test_a_simh_command_that_simh_refuses_fails_its_line(tmp_path):
     script = tmp_path / "s.script"
     script.write_text("1 .\n#simh show nosuchdevice\n2 .\n")
