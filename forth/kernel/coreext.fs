@@ -32,7 +32,8 @@ CODE 2R@  ( -- x1 x2 ) ( R: x1 x2 -- x1 x2 )  \ CORE EXT
 : ACTION-OF  ( "name" -- xt )  ['] DEFER@ TICK-DOES ;  IMMEDIATE  \ CORE EXT
 : VALUE!  ( x | x1 x2 xt -- )  \ a VALUE is a constant, a 2VALUE a DOES> child
   DUP 2+ @ 'DOCON = IF >BODY ! ELSE >BODY 2! THEN ;
-: TO  ( x "name" -- )  ['] VALUE! TICK-DOES ;  IMMEDIATE  \ CORE EXT, DOUBLE EXT
+: TO  ( x "name" -- )  \ CORE EXT, DOUBLE EXT, LOCALS
+  >IN @ PARSE-NAME LOCAL-TO? IF DROP EXIT THEN  >IN !  ['] VALUE! TICK-DOES ;  IMMEDIATE
 
 \ ---- the input source: S\" REFILL SAVE-INPUT RESTORE-INPUT -------------------------
 : SOURCE!  ( a u -- )  SRC 2!  0 >IN ! ;

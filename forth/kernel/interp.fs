@@ -60,7 +60,9 @@ VARIABLE NUM-CELLS  ( -- a ) \ 1 or 2: the number being converted
 \ FORTH-79's CONTEXT then FORTH, and a vocabulary word replaces CONTEXT @).
 : CHAIN  ( voc u -- a )  3 AND 2* + ;
 : WID-FIND  ( a u wid -- nfa | 0 )  OVER CHAIN @ (FIND) ;
-: SEARCH-NAME  ( a u -- nfa | 0 )  \ the search order
+: SEARCH-NAME  ( a u -- nfa | 0 )  \ the locals while compiling, the search order
+  STATE @ IF LOCALS-HERE @ LOCALS-AREA <> IF
+    2DUP LOCAL-FIND ?DUP IF NIP NIP EXIT THEN THEN THEN
   0 #ORDER @ 2* CONTEXT + CONTEXT ?DO  ( a u previous )
     I @ TUCK <> IF 2 PICK 2 PICK 2 PICK WID-FIND ?DUP IF NIP NIP NIP UNLOOP EXIT THEN THEN
   2 +LOOP DROP 2DROP 0 ;
@@ -157,7 +159,7 @@ DODOES CONSTANT 'DODOES  ( -- a )
 : VAR  ( x "name" -- )  CREATE , ;  \ the appendix's variable with a value
 : ARRAY  ( n "name" -- )  CREATE CELLS DUP ALLOT HERE OVER - SWAP ERASE ;  \ the appendix's n cells
 : (DOES>)  ( -- )  R> LAST @ NAME> 2+ ! ;  COMPILE-ONLY
-: DOES>  ( -- )  ['] (DOES>) , JSR-IP , 'DODOES , ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: DOES>  ( -- )  LOCALS-LEAVE, LOCALS-CLEAR  ['] (DOES>) , JSR-IP , 'DODOES , ;  IMMEDIATE COMPILE-ONLY  \ CORE
 : VALUE  ( x "name" -- )  CONSTANT ;  \ CORE EXT (TO stores into it)
 : TO  ( x "name" -- )  \ CORE EXT, DOUBLE EXT
   TICK >BODY STATE @ IF POSTPONE LITERAL ['] ! , ELSE ! THEN ;  IMMEDIATE
@@ -167,12 +169,12 @@ DODOES CONSTANT 'DODOES  ( -- a )
 : COLON-CONTEXT  ( -- )
   CONTEXT @ VOC-NAME CURRENT @ VOC-NAME AND IF CURRENT @ CONTEXT ! THEN ;
 : :  ( "name" -- colon-sys )  \ CORE: also ends an open CODE word (block 1008)
-  ?END-CODE  COLON-CONTEXT  ALIGN HERE COLON-LFA !
+  ?END-CODE  COLON-CONTEXT  LOCALS-CLEAR  ALIGN HERE COLON-LFA !
   PARSE-NAME HEADER, SMUDGE  HERE LAST-XT !  'DOCOL JSR-IP CF,  4 ] ;
 : :NONAME  ( -- xt colon-sys )  \ CORE EXT
-  0 COLON-LFA !  ALIGN HERE DUP LAST-XT !  'DOCOL JSR-IP CF, 4 ] ;
+  0 COLON-LFA !  LOCALS-CLEAR  ALIGN HERE DUP LAST-XT !  'DOCOL JSR-IP CF, 4 ] ;
 : ;  ( colon-sys -- )  \ CORE
-  ['] EXIT ,  4 ?PAIRS  COLON-LFA @ IF REVEAL THEN  0 COLON-LFA !  POSTPONE [ ;
+  LOCALS-LEAVE,  ['] EXIT ,  4 ?PAIRS  LOCALS-CLEAR  COLON-LFA @ IF REVEAL THEN  0 COLON-LFA !  POSTPONE [ ;
   IMMEDIATE COMPILE-ONLY
 : WORDLIST,  ( nfa -- wid )  \ an empty word list, linked from VOC-LINK
   ALIGN HERE  0 , 0 , 0 , 0 ,  HERE VOC-LINK @ , VOC-LINK !  SWAP , ;

@@ -43,6 +43,7 @@ ENVIRONMENT DEFINITIONS
 240 CONSTANT STACK-CELLS  ( -- n ) \ data stack, up to the overflow check
 240 CONSTANT RETURN-STACK-CELLS  ( -- n ) \ return stack, down to DOCOL's check
 8 CONSTANT WORDLISTS  ( -- n ) \ SEARCH: word lists in the search order
+16 CONSTANT #LOCALS  ( -- n ) \ LOCALS: locals in one definition
 FORTH DEFINITIONS
 : ENVIRONMENT?  ( a u -- false | i*x true )  \ CORE
   ['] ENVIRONMENT >BODY SEARCH-WORDLIST IF EXECUTE TRUE ELSE FALSE THEN ;

@@ -12,6 +12,7 @@ decimal
 $400 tdp !    \ ORIGIN 002000: vectors and stubs below, filled at the end
 s" forth/kernel/memory.fs" kernel
 s" forth/kernel/prims.fs" kernel
+s" EXIT" tcfa-of exit-cfa !   \ the primitive, for ; (compile.fs)
 s" forth/kernel/core.fs" kernel
 s" forth/kernel/interp.fs" kernel
 s" forth/kernel/quit.fs" kernel
@@ -32,6 +33,7 @@ s" forth/kernel/editor.fs" file-exists? [if]  s" forth/kernel/editor.fs" kernel 
 s" forth/asm-target.fs" kernel   \ vocabulary ASSEMBLER (the ASSEMBLER helper's binding)
 s" forth/kernel/code.fs" kernel
 s" forth/kernel/boot.fs" kernel
+s" forth/kernel/locals.fs" kernel   \ last: its IMMEDIATE EXIT shadows the primitive
 
 \ ---- finish: resolve, initialise the kernel's variables, vectors ---------------
 : fail ( addr u -- )  cr type cr 1 (bye) ;

@@ -325,3 +325,24 @@ def test_memory_allocate_free_resize(forth):
         == "0 0 -1 kept"
     assert forth.send("A3 @ -1 RESIZE . A3 @ = . -1 ALLOCATE NIP .") == "-61 -1 -59 "
     assert forth.send("A3 @ FREE . A2 @ FREE . 4000 ALLOCATE . FREE .") == "0 0 0 0 "
+
+
+# ---- LOCALS -----------------------------------------------------------------------
+def test_locals(forth):
+    forth.send(": L1 {: a b | c -- sum :} a b + TO c  c c * ;")
+    assert forth.send("3 4 L1 .") == "49 "
+    forth.send(": L2 {: n :} n 0> IF n 1- RECURSE n + EXIT THEN 0 ;")  # EXIT drops the frame
+    assert forth.send("10 L2 . DEPTH .") == "55 0 "
+    forth.send(": L3 {: I :} 3 0 DO I LOOP ;")  # a local named I hides the loop's I
+    assert forth.send("7 L3 .S 2DROP DROP") == "<3> 7 7 7 "
+    forth.send(": L4 {: x :} CREATE x , DOES> @ {: y :} y 2* ;")
+    assert forth.send("21 L4 FORTY-TWO  FORTY-TWO .") == "42 "
+    forth.send(": LOCAL BL WORD COUNT (LOCAL) ; IMMEDIATE  : END-LOCALS 0 0 (LOCAL) ; IMMEDIATE")
+    forth.send(": L5 LOCAL p LOCAL q END-LOCALS p q - ;")  # (LOCAL): the first is the top
+    assert forth.send("10 3 L5 .") == "-7 "
+    assert "L1" in forth.send("SEE L1") and "(LOCAL@) 0" in forth.send("SEE L1")
+    # an error inside a definition with locals leaves no name behind
+    assert "undefined word: nosuch" in forth.reply(": L6 {: z :} z nosuch ;").error
+    assert "undefined word: z" in forth.reply("z").error
+    assert forth.send(": L7 {: z :} z 1+ ; 1 L7 .") == "2 "
+    assert forth.send('S" #LOCALS" ENVIRONMENT? . .') == "-1 16 "
