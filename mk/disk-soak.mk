@@ -1,0 +1,9 @@
+# mk/disk-soak.mk: is FLUSH durable? (harness/disk_soak.py, README "Disk durability")
+#   make soak-disk [CYCLES=100]   edit -> FLUSH -> UPDATE -> kill -9 -> reboot on one
+#                                 image, CYCLES times; prints lost and corrupted
+#                                 blocks (both must be 0). tests/disk runs 10 cycles.
+CYCLES ?= 100
+soak-disk: $(BUILD)/pdp11 $(BUILD)/kernel.lda $(BUILD)/robot.dsk venv
+	@$(PY) -m harness.disk_soak $(CYCLES)
+
+.PHONY: soak-disk

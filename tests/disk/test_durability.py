@@ -1,0 +1,66 @@
+"""FLUSH is durable: a short version of make soak-disk (harness/disk_soak.py), and
+the write-through's failure path (an fsync that fails is a FORTH error)."""
+import shutil
+import subprocess
+
+import pytest
+
+from harness import disk_soak
+from harness.machine import Machine, ForthError
+
+PRELOAD_SRC = r"""
+#include <errno.h>
+int fsync (int fd) { errno = EIO; return -1; }
+"""
+
+
+def test_flushed_blocks_survive_kill_9(tmp_path):
+    image = tmp_path / "soak.dsk"
+    shutil.copyfile(disk_soak.PRISTINE, image)
+    tally = disk_soak.soak(image, 10)
+    assert tally.cycles == 10 and tally.flushed == 20
+    assert tally.lost == [] and tally.corrupted == [], disk_soak.report(tally)
+
+
+def test_compare_tells_lost_from_corrupted():
+    base = bytes(4 * 1024)
+    model = {None: base, 1: b"a" * 1024}
+    image = bytearray(base)
+    image[2048:3072] = b"b" * 1024           # block 2: neither flushed nor pending
+    image[3072:4096] = b"c" * 1024           # block 3: the pending block's new contents
+    tally = disk_soak.Tally()
+    disk_soak.compare(bytes(image), model, 3, b"c" * 1024, {1}, 7, tally)
+    assert tally.lost == [(7, 1)] and tally.corrupted == [(7, 2)]
+    assert tally.pending_kept == 1
+
+
+def test_each_cycle_writes_new_contents():
+    assert disk_soak.block_contents(1, 3000) != disk_soak.block_contents(2, 3000)
+    assert disk_soak.block_contents(95, 3000)[:2] == (95).to_bytes(2, "little")
+    edited, pending = disk_soak.cycle_blocks(3)
+    assert pending not in edited and len(set(edited)) == disk_soak.EDITS_PER_CYCLE
+
+
+@pytest.fixture(scope="module")
+def failing_fsync(tmp_path_factory):
+    if shutil.which("gcc") is None:
+        pytest.skip("gcc is needed to build the fsync fault injector")
+    tmp = tmp_path_factory.mktemp("preload")
+    (tmp / "fsync_eio.c").write_text(PRELOAD_SRC)
+    lib = tmp / "fsync_eio.so"
+    subprocess.run(["gcc", "-shared", "-fPIC", "-o", str(lib), str(tmp / "fsync_eio.c")],
+                   check=True)
+    return lib
+
+
+def test_a_failed_fsync_is_a_write_error_not_ok(tmp_path, failing_fsync, monkeypatch):
+    monkeypatch.setenv("LD_PRELOAD", str(failing_fsync))
+    image = tmp_path / "eio.dsk"
+    shutil.copyfile(disk_soak.PRISTINE, image)
+    with Machine(disk=image) as m:
+        with pytest.raises(ForthError) as err:
+            m.send("3000 BLOCK DROP UPDATE FLUSH")
+        assert "RL0 block 3000 write failed" in err.value.output
+        assert "drive-error" in err.value.output
+        assert "write-data-error" in err.value.output
+        assert m.send("1 2 + .") == "3 "             # the FORTH goes on
