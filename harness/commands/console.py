@@ -4,6 +4,7 @@ import shutil
 from pathlib import Path
 
 from harness.console_session import HINT, session
+from harness.disk import DiskError, check_image
 from harness.simh import PDP11
 
 NAME = "console"
@@ -17,7 +18,7 @@ class ConsoleError(RuntimeError):
     """The console cannot start."""
 
 
-ERRORS = (ConsoleError,)
+ERRORS = (ConsoleError, DiskError)
 
 DESCRIPTION = f"""\
 Boot the FORTH on the robot's PDP-11/23 and join your terminal to its console,
@@ -44,11 +45,11 @@ def configure(parser):
 
 
 def working_disk(requested):
-    """The image to attach; the default working copy is made when missing."""
+    """The image to attach, checked (harness.disk.check_image: the console changes
+    it, so it must be writable); the default working copy is made when missing."""
     if requested:
         disk = Path(requested)
-        if not disk.is_file():
-            raise ConsoleError(f"{disk}: no such disk image")
+        check_image(disk)
         return disk
     if not WORK_DISK.is_file():
         if not PRISTINE.is_file():
@@ -58,6 +59,7 @@ def working_disk(requested):
         shutil.copyfile(PRISTINE, tmp)
         tmp.replace(WORK_DISK)
         print(f"[console] working disk {WORK_DISK} created from {PRISTINE}")
+    check_image(WORK_DISK)
     return WORK_DISK
 
 
