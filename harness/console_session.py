@@ -80,8 +80,9 @@ class Departure:
             lines = [f"FLUSH answered ok: every UPDATEd block is written to {self.disk} "
                      "and synced to the host's disk."]
         elif self.flush == "ok":
-            lines = ["FLUSH answered ok, yet the FORTH's buffers could not be read "
-                     "back to confirm it."]
+            lines = ["FLUSH answered ok, " + ("yet the FORTH's buffers could not be read "
+                                              "back to confirm it." if self.unwritten is None
+                                              else "yet blocks are still UPDATEd:")]
         else:
             lines = [f"FLUSH {self.flush}." if self.flush != "not sent" else
                      "FLUSH could not be sent (the FORTH never came back to its prompt)."]
@@ -96,16 +97,16 @@ class Departure:
         return self.notes + lines
 
 
-def _to_forth_prompt(child, gone):
+def _to_forth_prompt(child, gone, busy_wait):
     """Bring the FORTH to its prompt; 0 at the prompt, 2 no answer, 3 exited."""
     child.send(CTRL_U + b"\r")                   # an empty line: who answers?
     i = child.expect([b" ok\r\n", b"sim> ", pexpect.TIMEOUT, pexpect.EOF],
-                     timeout=BUSY_WAIT)
+                     timeout=busy_wait)
     if i == 1:                                   # SIMH had the machine stopped
         child.send(b"cont\r")
         return probe_prompt(child)
     if i == 2:                                   # a word is running: stop it as a user would
-        gone.notes.append(f"The FORTH was busy for {BUSY_WAIT} s: ^C stopped the "
+        gone.notes.append(f"The FORTH was busy for {busy_wait:g} s: ^C stopped the "
                           "running word so that FLUSH could run.")
         child.send(CTRL_C)
         return probe_prompt(child)
@@ -113,9 +114,15 @@ def _to_forth_prompt(child, gone):
 
 
 def _flush(child):
+    """FLUSH's answer. Empty lines typed to find the prompt may still be answered
+    after it is sent, so the answer counted is the one after FLUSH's own echo."""
     child.send(b"FLUSH\r")
-    i = child.expect([b" ok\r\n", rb"Error: [^\r]*", pexpect.TIMEOUT, pexpect.EOF],
-                     timeout=FLUSH_WAIT)
+    answers = [b" ok\r\n", rb"Error: [^\r]*", pexpect.TIMEOUT, pexpect.EOF]
+    i = child.expect([b"FLUSH"] + answers[2:], timeout=FLUSH_WAIT)
+    if i == 0:
+        i = child.expect(answers, timeout=FLUSH_WAIT)
+    else:
+        i += 1
     if i == 1:
         return f"failed ({child.match.group(0).decode('latin-1')})"
     return ("ok", "", f"was not answered within {FLUSH_WAIT} s (the FORTH is busy)",
@@ -141,12 +148,12 @@ def _detach(child, unit):
     return found.group(1).decode("latin-1") if found else "ok"
 
 
-def leave(child, disk, trace, kernel=KERNEL):
+def leave(child, disk, trace, kernel=KERNEL, busy_wait=BUSY_WAIT):
     """Flush the FORTH's blocks, check, detach, quit; the Departure."""
     gone = Departure(Path(disk))
     child.logfile_read = sys.stdout.buffer       # the user sees what happens
     try:
-        if _to_forth_prompt(child, gone) == 0:
+        if _to_forth_prompt(child, gone, busy_wait) == 0:
             gone.flush = _flush(child)
         child.logfile_read = None                # the checks below are the harness's own
         if not child.isalive():
@@ -168,7 +175,7 @@ def leave(child, disk, trace, kernel=KERNEL):
     return gone
 
 
-def session(simulator, disk, trace=None, fast=False, kernel=KERNEL):
+def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BUSY_WAIT):
     """Run the console until the user leaves; the exit status (0: all written)."""
     with tempfile.TemporaryDirectory(prefix="console-") as tmp:
         ini = Path(tmp) / "console.ini"
@@ -189,7 +196,7 @@ def session(simulator, disk, trace=None, fast=False, kernel=KERNEL):
             if way.how != "BYE":
                 say(f"{way.how}: leaving; the FORTH FLUSHes its blocks first")
             child.send(way.typed)                # typed ahead of the way out
-            gone = leave(child, disk, trace, kernel)
+            gone = leave(child, disk, trace, kernel, busy_wait)
             say(*gone.report(), "Bye.")
             return 0 if gone.safe else 1
         finally:

@@ -3,7 +3,8 @@ import argparse
 import shutil
 from pathlib import Path
 
-from harness.console_session import HINT, session
+from harness.commands.argtypes import positive
+from harness.console_session import BUSY_WAIT, HINT, session
 from harness.disk import DiskError, check_image
 from harness.simh import PDP11
 
@@ -41,6 +42,9 @@ def configure(parser):
                         help="full speed instead of the 11/23's real-time pace")
     parser.add_argument("--trace", metavar="FILE", help="record the plant trace (CSV)")
     parser.add_argument("--simulator", default=str(PDP11), help=argparse.SUPPRESS)
+    # wall seconds a running word gets at BYE before ^C stops it (tests shorten it)
+    parser.add_argument("--busy-wait", type=positive, default=BUSY_WAIT,
+                        help=argparse.SUPPRESS)
     parser.set_defaults(run=run)
 
 
@@ -69,4 +73,5 @@ def run(args):
         raise ConsoleError(f"{args.simulator}: no simulator (run make)")
     if args.trace and not Path(args.trace).resolve().parent.is_dir():
         raise ConsoleError(f"{args.trace}: its directory does not exist")
-    return session(args.simulator, disk, trace=args.trace, fast=args.fast)
+    return session(args.simulator, disk, trace=args.trace, fast=args.fast,
+                   busy_wait=args.busy_wait)

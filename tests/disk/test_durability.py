@@ -1,19 +1,14 @@
 """FLUSH is durable: a short version of make soak-disk (harness/disk_soak.py), and
 the write-through's failure path (an fsync that fails is a FORTH error)."""
 import shutil
-import subprocess
 
 import pytest
 
 from harness import disk_soak
-from harness.machine import Machine, ForthError
+from harness.machine import ForthError, Machine
+from tests.run.common import failing_fsync_library, needs_build
 
-PRELOAD_SRC = r"""
-#include <errno.h>
-int fsync (int fd) { errno = EIO; return -1; }
-"""
-
-
+@needs_build
 def test_flushed_blocks_survive_kill_9(tmp_path):
     image = tmp_path / "soak.dsk"
     shutil.copyfile(disk_soak.PRISTINE, image)
@@ -41,20 +36,9 @@ def test_each_cycle_writes_new_contents():
     assert pending not in edited and len(set(edited)) == disk_soak.EDITS_PER_CYCLE
 
 
-@pytest.fixture(scope="module")
-def failing_fsync(tmp_path_factory):
-    if shutil.which("gcc") is None:
-        pytest.skip("gcc is needed to build the fsync fault injector")
-    tmp = tmp_path_factory.mktemp("preload")
-    (tmp / "fsync_eio.c").write_text(PRELOAD_SRC)
-    lib = tmp / "fsync_eio.so"
-    subprocess.run(["gcc", "-shared", "-fPIC", "-o", str(lib), str(tmp / "fsync_eio.c")],
-                   check=True)
-    return lib
-
-
-def test_a_failed_fsync_is_a_write_error_not_ok(tmp_path, failing_fsync, monkeypatch):
-    monkeypatch.setenv("LD_PRELOAD", str(failing_fsync))
+@needs_build
+def test_a_failed_fsync_is_a_write_error_not_ok(tmp_path, monkeypatch):
+    monkeypatch.setenv("LD_PRELOAD", str(failing_fsync_library(tmp_path)))
     image = tmp_path / "eio.dsk"
     shutil.copyfile(disk_soak.PRISTINE, image)
     with Machine(disk=image) as m:
