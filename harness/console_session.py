@@ -117,14 +117,14 @@ def _flush(child):
     """FLUSH's answer. Empty lines typed to find the prompt may still be answered
     after it is sent, so the answer counted is the one after FLUSH's own echo."""
     child.send(b"FLUSH\r")
-    answers = [b" ok\r\n", rb"Error: [^\r]*", pexpect.TIMEOUT, pexpect.EOF]
+    answers = [b" ok\r\n", rb"(Error: [^\r]*)\r\n", pexpect.TIMEOUT, pexpect.EOF]
     i = child.expect([b"FLUSH"] + answers[2:], timeout=FLUSH_WAIT)
     if i == 0:
         i = child.expect(answers, timeout=FLUSH_WAIT)
     else:
         i += 1
     if i == 1:
-        return f"failed ({child.match.group(0).decode('latin-1')})"
+        return f"failed ({child.match.group(1).decode('latin-1')})"
     return ("ok", "", f"was not answered within {FLUSH_WAIT} s (the FORTH is busy)",
             "was cut short: the simulator exited")[i]
 
