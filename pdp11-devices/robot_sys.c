@@ -23,9 +23,8 @@
    definition is the one linked. robot_vm_init fills the table, replaces the
    console keyboard's service routine (console_pacing.c), wraps the RL02
    units' service routine so that a written block is fflush()ed and fsync()ed
-   before the controller reports it done (rl_durable.c: FLUSH is durable) and
-   installs
-   sim_vm_post, which scp.c calls after every command (used to end a
+   before the controller reports it done (rl_durable.c: FLUSH is durable), and
+   installs sim_vm_post, which scp.c calls after every command (used to end a
    SET PLANT axis selection). */
 #include "robot.h"
 
