@@ -12,6 +12,10 @@ hold:
   corrupted  any other block that differs from the model (the UPDATEd but
              unflushed block may hold its old or its new contents, nothing else)
 
+Every 5th cycle instead kills the simulator a few host milliseconds after FLUSH
+is typed, while it writes: each edited block may then be old or new, but whole,
+and no other block may change.
+
     python -m harness.disk_soak [CYCLES]     default 100; exit 1 on any loss
 
 tests/disk/test_durability.py runs a short version. Contents change every
@@ -19,6 +23,7 @@ cycle: each edited block is filled with a character and its first cell holds
 the cycle number, so a block left over from an earlier cycle is noticed.
 """
 import os
+import random
 import shutil
 import signal
 import sys
@@ -35,6 +40,8 @@ PRISTINE = ROOT / "build" / "robot.dsk"
 FIRST = 3000                # the blocks the soak edits: FIRST .. FIRST + SPAN - 1
 SPAN = 8
 EDITS_PER_CYCLE = 2
+TORN_EVERY = 5              # every 5th cycle kills the simulator during FLUSH
+TORN_DELAY = 0.004          # host seconds after FLUSH is typed, at most
 
 
 def block_contents(cycle, block):
@@ -69,16 +76,20 @@ def cycle_blocks(cycle):
 @dataclass
 class Tally:
     cycles: int = 0
-    flushed: int = 0          # blocks written by FLUSH
+    flushed: int = 0          # blocks FLUSH confirmed (" ok") before the kill
     lost: list = field(default_factory=list)        # (cycle, block)
     corrupted: list = field(default_factory=list)   # (cycle, block)
-    pending_kept: int = 0     # unflushed UPDATEs that reached the disk anyway
+    unconfirmed: int = 0      # blocks written but not confirmed when the kill came
+    unconfirmed_kept: int = 0  # of which the new contents reached the disk
     seconds: float = 0.0
 
 
-def compare(image, model, pending, pending_new, flushed, cycle, tally):
-    """Check `image` (bytes) against `model` ({block: bytes}, every other block as
-    in the model's base image `model[None]`); record losses in `tally`."""
+def compare(image, model, confirmed, unconfirmed, cycle, tally):
+    """Check `image` (bytes) against `model` ({block: bytes}; every other block as
+    in the base image `model[None]`). Blocks in `confirmed` must hold their model
+    contents (else lost); a block of `unconfirmed` ({block: new bytes}) may hold
+    its old or its new contents, whole; anything else is corrupted. The model
+    follows what is found, so a fault is counted once."""
     base = model[None]
     expected = bytearray(base)
     for n, data in model.items():
@@ -88,15 +99,13 @@ def compare(image, model, pending, pending_new, flushed, cycle, tally):
         return
     for n in range(len(image) // BLOCK_BYTES):
         got = image[n * BLOCK_BYTES:(n + 1) * BLOCK_BYTES]
-        want = model.get(n, base[n * BLOCK_BYTES:(n + 1) * BLOCK_BYTES])
-        if got == want:
+        if got == expected[n * BLOCK_BYTES:(n + 1) * BLOCK_BYTES]:
             continue
-        if n == pending and got == pending_new:
-            tally.pending_kept += 1
-            model[n] = got
+        if got == unconfirmed.get(n):
+            tally.unconfirmed_kept += 1
         else:
-            (tally.lost if n in flushed else tally.corrupted).append((cycle, n))
-            model[n] = got             # counted once, not again in every later cycle
+            (tally.lost if n in confirmed else tally.corrupted).append((cycle, n))
+        model[n] = got
 
 
 def kill_now(machine):
@@ -105,6 +114,12 @@ def kill_now(machine):
     machine.child.wait()
     machine.child.ptyproc.delayafterclose = 0      # it is dead: no grace period
     machine.child.close()
+
+
+def torn_cycle(cycle):
+    """Every TORN_EVERY-th cycle the kill comes while FLUSH is writing: it may
+    leave each block old or new, never half of one, and touch nothing else."""
+    return cycle % TORN_EVERY == 0
 
 
 def one_cycle(image, cycle, model, tally):
@@ -116,17 +131,25 @@ def one_cycle(image, cycle, model, tally):
             if block in model and seen != int.from_bytes(model[block][0:2], "little"):
                 tally.lost.append((cycle, block))
             m.send(forth_edit(cycle, block))
-        m.send(write_back_word(cycle))
-        m.send(forth_edit(cycle, pending, "BUFFER"))
+        if torn_cycle(cycle):
+            m.child.send("FLUSH\r")
+            time.sleep(random.Random(cycle).uniform(0, TORN_DELAY))
+        else:
+            m.send(write_back_word(cycle))
+            m.send(forth_edit(cycle, pending, "BUFFER"))
         kill_now(m)
     finally:
         m.close()
-    for block in edited:
-        model[block] = block_contents(cycle, block)
-    compare(read_image(image), model, pending, block_contents(cycle, pending),
-            set(edited), cycle, tally)
+    new = {block: block_contents(cycle, block) for block in edited}
+    if torn_cycle(cycle):
+        unconfirmed, confirmed = new, {}
+    else:
+        unconfirmed, confirmed = {pending: block_contents(cycle, pending)}, new
+        model.update(confirmed)
+    compare(read_image(image), model, confirmed, unconfirmed, cycle, tally)
     tally.cycles += 1
-    tally.flushed += len(edited)
+    tally.flushed += len(confirmed)
+    tally.unconfirmed += len(unconfirmed)
 
 
 def soak(image, cycles):
@@ -141,10 +164,12 @@ def soak(image, cycles):
 
 
 def report(tally):
-    return (f"{tally.cycles} cycles of edit -> FLUSH/SAVE-BUFFERS -> UPDATE -> kill -9 -> reboot: "
+    return (f"{tally.cycles} cycles of edit -> FLUSH/SAVE-BUFFERS -> UPDATE -> kill -9 -> "
+            f"reboot (every {TORN_EVERY}th: kill -9 during FLUSH): "
             f"{tally.flushed} flushed blocks, {len(tally.lost)} lost, "
-            f"{len(tally.corrupted)} corrupted; {tally.pending_kept} unflushed UPDATEs "
-            f"reached the disk; {tally.seconds:.1f} s "
+            f"{len(tally.corrupted)} corrupted; of {tally.unconfirmed} writes not "
+            f"confirmed at the kill, {tally.unconfirmed_kept} reached the disk; "
+            f"{tally.seconds:.1f} s "
             f"({1000 * tally.seconds / max(tally.cycles, 1):.0f} ms per cycle)"
             + "".join(f"\n  lost: cycle {c} block {b}" for c, b in tally.lost)
             + "".join(f"\n  corrupted: cycle {c} block {b}" for c, b in tally.corrupted))

@@ -13,20 +13,27 @@ def test_flushed_blocks_survive_kill_9(tmp_path):
     image = tmp_path / "soak.dsk"
     shutil.copyfile(disk_soak.PRISTINE, image)
     tally = disk_soak.soak(image, 10)
-    assert tally.cycles == 10 and tally.flushed == 20
+    # cycles 5 and 10 kill during FLUSH: 8 x 2 confirmed blocks, 8 + 2 x 2 unconfirmed
+    assert tally.cycles == 10 and tally.flushed == 16 and tally.unconfirmed == 12
     assert tally.lost == [] and tally.corrupted == [], disk_soak.report(tally)
 
 
-def test_compare_tells_lost_from_corrupted():
-    base = bytes(4 * 1024)
+def test_compare_tells_lost_from_corrupted_and_allows_unconfirmed_writes():
+    base = bytes(5 * 1024)
     model = {None: base, 1: b"a" * 1024}
     image = bytearray(base)
     image[2048:3072] = b"b" * 1024           # block 2: neither flushed nor pending
-    image[3072:4096] = b"c" * 1024           # block 3: the pending block's new contents
+    image[3072:4096] = b"c" * 1024           # block 3: an unconfirmed block's new contents
+    image[4096:4608] = b"d" * 512            # block 4: unconfirmed, and torn in half
     tally = disk_soak.Tally()
-    disk_soak.compare(bytes(image), model, 3, b"c" * 1024, {1}, 7, tally)
-    assert tally.lost == [(7, 1)] and tally.corrupted == [(7, 2)]
-    assert tally.pending_kept == 1
+    disk_soak.compare(bytes(image), model, {1: b"a" * 1024},
+                      {3: b"c" * 1024, 4: b"d" * 1024}, 7, tally)
+    assert tally.lost == [(7, 1)] and tally.corrupted == [(7, 2), (7, 4)]
+    assert tally.unconfirmed_kept == 1
+    assert model[1] == bytes(1024)            # the model follows: counted once
+    again = disk_soak.Tally()
+    disk_soak.compare(bytes(image), model, {}, {}, 8, again)
+    assert again.lost == again.corrupted == []
 
 
 def test_each_cycle_writes_new_contents():
