@@ -146,3 +146,19 @@ def test_missing_disk_is_a_clear_error(tmp_path):
     child.close()
     assert "none.dsk: no such disk image" in child.before
     assert child.exitstatus == 1
+
+
+def test_a_simulator_that_dies_is_reported_with_what_it_cost(tmp_path):
+    """SIMH's `!` runs a shell command: killing SIMH from it stands for a crash."""
+    disk = tmp_path / "work.dsk"
+    shutil.copyfile(PRISTINE, disk)
+    child = console(disk)
+    write_block_word(child, "lost in the crash")
+    child.send("\x05")
+    child.expect("sim> ")
+    child.send("! kill -KILL $PPID\r")
+    child.expect_exact("[console] the simulator exited on its own: blocks UPDATEd since "
+                       "the last FLUSH, if any, were not written to")
+    child.expect(pexpect.EOF)
+    child.close()
+    assert child.exitstatus == 1
