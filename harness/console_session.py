@@ -32,7 +32,7 @@ FLUSH_WAIT = 60                    # wall seconds the FORTH gets to answer FLUSH
 HINT = ("Console: leave with BYE (or ^D; ^C or QUIT at sim> too): the FORTH FLUSHes its "
         "blocks and the disk is detached. ^E gives SIMH's sim> prompt (SHOW PLANT, then "
         "CONT to come back).")
-SIMH_ERROR = re.compile(rb"(Unit not attached|Non-existent[^\r\n]*|[A-Z][^\r\n]*error[^\r\n]*)")
+SIMH_ERROR = re.compile(r"(Unit not attached|Non-existent[^\r\n]*|[A-Z][^\r\n]*error[^\r\n]*)")
 
 
 def boot_script(disk, trace=None, fast=False, kernel=KERNEL):
@@ -66,7 +66,7 @@ def probe_prompt(child, tries=20):
 class Departure:
     """What leaving did to the disk, for the report and the exit status."""
     disk: Path
-    flush: str = "not sent"          # "ok", "Error: ...", "no answer", "not sent"
+    flush: str = "not sent"          # "ok", or what happened: "failed (Error: ...)", ...
     unwritten: list = None           # UPDATEd blocks left in the buffers (None: unknown)
     detach: str = "not tried"        # "ok" or why not
     notes: list = field(default_factory=list)
@@ -125,8 +125,8 @@ def _flush(child):
         i += 1
     if i == 1:
         return f"failed ({child.match.group(1).decode('latin-1')})"
-    return ("ok", "", f"was not answered within {FLUSH_WAIT} s (the FORTH is busy)",
-            "was cut short: the simulator exited")[i]
+    return {0: "ok", 2: f"was not answered within {FLUSH_WAIT} s (the FORTH is busy)",
+            3: "was cut short: the simulator exited"}[i]
 
 
 def _simh(child, command):
@@ -144,8 +144,12 @@ def _unwritten(child, kernel):
 
 
 def _detach(child, unit):
-    found = SIMH_ERROR.search(_simh(child, f"detach {unit}").encode("latin-1"))
-    return found.group(1).decode("latin-1") if found else "ok"
+    """"ok", or why the unit was not detached (SIMH detaches an unattached unit
+    silently, so SHOW says first whether there is anything to detach)."""
+    if "not attached" in _simh(child, f"show {unit}"):
+        return "it was not attached (a DETACH at sim>, or an ATTACH that failed)"
+    found = SIMH_ERROR.search(_simh(child, f"detach {unit}"))
+    return found.group(1) if found else "ok"
 
 
 def leave(child, disk, trace, kernel=KERNEL, busy_wait=BUSY_WAIT):

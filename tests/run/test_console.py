@@ -162,3 +162,24 @@ def test_a_simulator_that_dies_is_reported_with_what_it_cost(tmp_path):
     child.expect(pexpect.EOF)
     child.close()
     assert child.exitstatus == 1
+
+
+def test_bye_after_the_disk_was_detached_says_so_and_names_the_lost_block(tmp_path):
+    disk = tmp_path / "work.dsk"
+    shutil.copyfile(PRISTINE, disk)
+    child = console(disk)
+    write_block_word(child, "no disk to write to")
+    child.send("\x05")
+    child.expect("sim> ")
+    child.send("detach rl0\r")
+    child.expect("sim> ")
+    child.send("cont\r")
+    assert probe_prompt(child) == 0
+    child.send("BYE\r")
+    child.expect(r"RL0 block 100 write not ready: .*not-ready")
+    child.expect(r"FLUSH failed \(Error: block write error: FLUSH\)\.\r+\n")
+    child.expect_exact(f"[console] NOT SAVED: block(s) {BLOCK}: UPDATEd")
+    child.expect_exact("not detached: it was not attached (a DETACH at sim>")
+    child.expect(pexpect.EOF)
+    child.close()
+    assert child.exitstatus == 1
