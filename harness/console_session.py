@@ -49,14 +49,15 @@ def say(*lines):
     sys.stdout.flush()
 
 
-def probe_prompt(child, tries=20):
+def probe_prompt(child, tries=40):
     """After CONT: SIMH discards what was typed before the machine runs
     (TCSAFLUSH), so type an empty line until the FORTH answers it.
-    0 answered, 2 no answer, 3 the simulator exited."""
+    0 answered, 2 no answer, 3 the simulator exited. (A late answer to an
+    earlier empty line may come after this returns: _flush allows for it.)"""
     ok = " ok\r\n" if child.encoding else b" ok\r\n"   # str or bytes, as the child reads
     for _ in range(tries):
         child.send("\r")
-        i = child.expect([ok, pexpect.TIMEOUT, pexpect.EOF], timeout=0.5)
+        i = child.expect([ok, pexpect.TIMEOUT, pexpect.EOF], timeout=0.25)
         if i != 1:
             return 0 if i == 0 else 3
     return 2
