@@ -59,9 +59,13 @@ def main():
     print(f"{'operation':45s} {'instructions':>14s} {'ms':>9s}")
     for name, n in rows:
         print(f"{name:45s} {n:14d} {1000 * n / RATE:9.2f}")
-    print(f"FLUSH of a block, host time, fsync included: {write_us:9.1f} us "
-          f"(wall time of {WRITES} FLUSHed writes minus the same loop without them)")
-    print(f"1024-byte write + fsync from Python on the same file system: {fsync_us:9.1f} us")
+    flush = dict(rows)["FLUSH of one UPDATEd block (write)"]
+    print(f"\nFLUSH write-through (pdp11-devices/rl_durable.c), per block written:\n"
+          f"  PDP-11 instructions {flush:10d}   (the write-through adds none)\n"
+          f"  host microseconds   {write_us:10.1f}   (wall time of {WRITES} FLUSHed "
+          "writes minus the same loop without them; fflush + fsync included)\n"
+          f"  host microseconds   {fsync_us:10.1f}   (reference: Python writing 1024 "
+          "bytes and fsync()ing, same file system)")
     if any(n <= 0 for _, n in rows):
         print("a count is not positive: the breakpoints did not fire", file=sys.stderr)
         sys.exit(1)

@@ -27,9 +27,10 @@
    Cost: one fsync per block written (the FORTH moves a 1024-byte block in one
    transfer). It costs host time only; simulated time (the instruction count,
    1344 instructions for FLUSH of one block) is unchanged, so transcripts and
-   traces are the same. make bench-disk prints the host time: about 140-180 us
-   per FLUSHed block on the project's ext4 host, against 25-50 us without the
-   write-through (a build with it removed), i.e. roughly 0.1 ms per block.
+   traces are the same. make bench-disk prints the host time: 140-550 us per
+   FLUSHed block on the project's shared ext4 host (as busy as its disk),
+   against 25-50 us without the write-through (a build with it removed): the
+   fsync is nearly all of it.
    Proof: make soak-disk (harness/disk_soak.py) kills the simulator with
    SIGKILL after FLUSH, 100 times, and finds every flushed block. */
 #include <errno.h>
