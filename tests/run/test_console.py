@@ -68,7 +68,6 @@ def test_console_command_simh_prompt_and_bye_flushes(tmp_path):
 
 # (every abbreviation of QUIT, EXIT and BYE: tests/run/test_console_watch.py)
 @pytest.mark.parametrize("keys,how", [("\x04", None),        # ^D at sim>
-                                      ("\x03", "^C at SIMH's prompt"),
                                       ("  q\r", "SIMH's QUIT at its prompt")])
 def test_every_way_out_of_the_simh_prompt_flushes_first(tmp_path, keys, how):
     disk = tmp_path / "work.dsk"
@@ -87,7 +86,7 @@ def test_every_way_out_of_the_simh_prompt_flushes_first(tmp_path, keys, how):
     assert block_text(disk, BLOCK).startswith(f"left with {keys!r}".encode())
 
 
-def test_simh_commands_at_sim_do_not_leave_and_cont_gives_the_forth_back(tmp_path):
+def test_ctrl_c_is_the_forths_until_sim_where_it_leaves_after_flush(tmp_path):
     disk = tmp_path / "work.dsk"
     shutil.copyfile(PRISTINE, disk)
     child = console(disk)
@@ -100,9 +99,17 @@ def test_simh_commands_at_sim_do_not_leave_and_cont_gives_the_forth_back(tmp_pat
     child.send("\x03")                          # ^C to the FORTH: not a way out
     child.send("2 3 + .\r")
     child.expect(r"5  ok\r\n")
-    child.send("BYE\r")
+    write_block_word(child, "left with control-C")
+    child.send("\x05")
+    child.expect("sim> ")
+    child.send("\x03")                          # at sim>: SIMH would die of it
+    child.expect_exact("[console] ^C at SIMH's prompt: leaving; the FORTH FLUSHes its "
+                       "blocks first")
     child.expect(FLUSHED)
     child.expect(pexpect.EOF)
+    child.close()
+    assert child.exitstatus == 0
+    assert block_text(disk, BLOCK).startswith(b"left with control-C")
 
 
 def test_bye_while_a_word_runs_stops_it_with_ctrl_c_and_flushes(tmp_path):
