@@ -3,14 +3,15 @@ and the gripper on the emulated robot, on the printed servo and on the
 proposed corrected one (block 1030), in lock-step with simulated time
 (harness/robot.py): the same command gives the same traces and figures.
 
-    python -m harness.continuation_runs OUTDIR [--servo printed|ramp]...
+    python -m harness.continuation_runs OUTDIR [--servo printed|ramp]... [--figures DIR]
 
 For each servo, writes OUTDIR/SERVO/square-SPEED.csv (a 4-inch square at
 2400 and 4800 counts/s), points.csv (the same corners by Abs.Move
 Move.Complete?), circle.csv (16 via points, radius 2 inches, 2400 counts/s),
 the square and circle again with blends of BLEND_SLOW ticks (-slow.csv), and,
 for the printed servo, pick.csv (block 1052's pick and place); prints the
-measurements the docs quote (harness/path_metrics.py).
+measurements the docs quote (harness/path_metrics.py). With --figures, draws the docs' figures from
+those traces into DIR (continuation-SERVO-NAME-xy.png, continuation-pick-gripper.png).
 """
 import argparse
 import math
@@ -82,7 +83,11 @@ def counters(r):
     return [v["counter"] for v in r.plant().values()]
 
 
+FIGURES = []          # (trace path, corners, window) of each path run, for --figures
+
+
 def report_path(name, trace_path, corners, t0, t1, end_counters):
+    FIGURES.append((trace_path, corners, (t0, t1 + 1.0)))
     m = pm.measure(pm.path_samples(tr.read(trace_path), t0, t1 + 1.0), corners)
     print(f"  {name}: Path.Run to Path.Wait {t1 - t0:.3f} s")
     print("    largest deviation per segment, counts: "
@@ -101,7 +106,6 @@ def square(out, servo, tmp, speed, blend=BLEND, name=None):
         r.idle(1.0)
         report_path(f"square 4 in at {speed} counts/s, Blend {blend} ({name})", out / name,
                     SQUARE, t0, t1, counters(r))
-        print(f"    (window for the xy figure: --window {t0:.2f}:{t1 + 1:.2f})")
 
 
 def circle_run(out, servo, tmp, blend=BLEND, name="circle.csv"):
@@ -114,22 +118,31 @@ def circle_run(out, servo, tmp, blend=BLEND, name="circle.csv"):
         r.idle(1.0)
         report_path(f"circle r 2 in, 16 via points, at 2400 counts/s, Blend {blend}",
                     out / name, pts, t0, t1, counters(r))
-        print(f"    (window for the xy figure: --window {t0:.2f}:{t1 + 1:.2f})")
+
+
+# waits until x and y are within 30 counts of Desire.Pos (the printed servo's
+# hunting is about +-25): point to point without Move.Complete?'s +-4 window
+NEAR = (": Near ( -- ) BEGIN 0 Read.Counter Desire.Pos @ - ABS 30 < "
+        "1 Read.Counter Desire.Pos 2+ @ - ABS 30 < AND END ;")
 
 
 def point_to_point(out, servo, tmp):
-    """The same corners by Abs.Move Move.Complete?; a line that does not return
-    within 10 simulated seconds is reported (the printed servo can hunt)."""
-    with session(out / "points.csv", servo, tmp) as r:
-        t0 = r.time()
-        for x, y in SQUARE[1:]:
-            answer = r.line(f"{x} {y} {PLANE} 0 Abs.Move Move.Complete?", 10.0)
-            if answer.stopped:
-                print(f"  point to point: {x} {y}: Move.Complete? did not return "
-                      f"within 10 s")
-                return
-        print(f"  point to point, Abs.Move Move.Complete? at the 4 corners: "
-              f"{r.time() - t0:.3f} s")
+    """The same corners by Abs.Move, waiting with Move.Complete? (a line that
+    does not return within 10 simulated seconds is reported: the printed
+    servo can hunt round a corner for ever), then again waiting with Near."""
+    for wait, name in (("Move.Complete?", "points.csv"), ("Near", "points-near.csv")):
+        with session(out / name, servo, tmp) as r:
+            r.send(NEAR)
+            t0 = r.time()
+            for x, y in SQUARE[1:]:
+                answer = r.line(f"{x} {y} {PLANE} 0 Abs.Move {wait}", 10.0)
+                if answer.stopped:
+                    print(f"  point to point, Abs.Move {wait}: at {x} {y} it did not "
+                          "return within 10 s")
+                    break
+            else:
+                print(f"  point to point, Abs.Move {wait} at the 4 corners: "
+                      f"{r.time() - t0:.3f} s")
 
 
 def pick_and_place(out, tmp):
@@ -140,13 +153,29 @@ def pick_and_place(out, tmp):
         said = r.send("1052 LOAD")
         print(f"  pick and place (1052 LOAD): {said.strip()!r}, {r.time() - t0:.2f} s, "
               f"from {t0:.2f} s")
+    return out / "pick.csv"
+
+
+def draw(figdir, pick):
+    from harness import path_plots, plots
+    figdir.mkdir(parents=True, exist_ok=True)
+    for path, corners, window in FIGURES:
+        name = f"continuation-{path.parent.name}-{path.stem}-xy.png"
+        plots.save(path_plots.xy_figure(tr.read(path), corners, [window]), [figdir / name])
+        print(figdir / name)
+    if pick:
+        plots.save(path_plots.gripper_figure(tr.read(pick)),
+                   [figdir / "continuation-pick-gripper.png"])
+        print(figdir / "continuation-pick-gripper.png")
 
 
 def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("outdir", type=Path)
     ap.add_argument("--servo", choices=tuple(SERVO_BLOCK), action="append")
+    ap.add_argument("--figures", type=Path, metavar="DIR", help="draw the figures there")
     a = ap.parse_args(argv)
+    pick = None
     with tempfile.TemporaryDirectory() as tmp:
         for servo in a.servo or tuple(SERVO_BLOCK):
             out = a.outdir / servo
@@ -160,7 +189,9 @@ def main(argv=None):
             circle_run(out, servo, tmp, BLEND_SLOW, "circle-slow.csv")
             point_to_point(out, servo, tmp)
             if servo == "printed":
-                pick_and_place(out, tmp)
+                pick = pick_and_place(out, tmp)
+    if a.figures:
+        draw(a.figures, pick)
     return 0
 
 
