@@ -48,8 +48,9 @@ def _scaled(c):
     return q if c >= 0 else -q
 
 
-def vias_text(points):
-    return " ".join(f"{x} {y} {PLANE} 0 Via" for x, y in points)
+def vias_text(points, z=PLANE):
+    """FORTH text giving x-y points as via points at height z."""
+    return " ".join(f"{x} {y} {z} 0 Via" for x, y in points)
 
 
 def session(trace, servo, disk_dir, blend=BLEND, sample=60):

@@ -9,6 +9,7 @@ trace), with a FORTH-line interface:
         r.send("Set.Up.Robot")
         r.idle(2.0)                         # two simulated seconds pass, FORTH idle
         r.plant()                           # SHOW PLANT, parsed per axis
+        r.gripper()                         # its gripper line, parsed
 """
 import re
 
@@ -37,6 +38,17 @@ def parse_show_plant(text):
     if set(axes) != set(AXES):
         raise ValueError(f"SHOW PLANT output not understood: {text!r}")
     return axes
+
+
+def parse_show_gripper(text):
+    """SHOW PLANT's (last) gripper line -> {opening (in), steps, object (in),
+    contact, pulses, missed, blocked}."""
+    lines = [ln for ln in text.splitlines() if ln.strip().startswith("gripper ")]
+    if not lines:
+        raise ValueError(f"no gripper line in SHOW PLANT's output: {text[-200:]!r}")
+    f = lines[-1].replace(",", " ").replace("(", " ").split()
+    return dict(opening=float(f[2]), steps=int(f[4]), object=float(f[7]), contact=int(f[10]),
+                pulses=int(f[12]), missed=int(f[14]), blocked=int(f[16]))
 
 
 class Robot(ScriptedMachine):
@@ -103,6 +115,9 @@ class Robot(ScriptedMachine):
 
     def plant(self):
         return parse_show_plant(self.simh("show plant"))
+
+    def gripper(self):
+        return parse_show_gripper(self.simh("show plant"))
 
     def examine(self, addr):
         """A memory word (unsigned) read through SIMH."""

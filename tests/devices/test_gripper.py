@@ -7,24 +7,17 @@ from pathlib import Path
 
 from harness import simh
 from harness.pdp11prog import examine_results, results
+from harness.robot import parse_show_gripper
 import programs
 
 GRIPPER_TEST = Path(__file__).resolve().parents[2] / "build" / "gripper_test"
 REQB = 0o100000
 
 
-def gripper_line(output):
-    """The last SHOW PLANT gripper line as {name: value}."""
-    line = [ln for ln in output.splitlines() if ln.strip().startswith("gripper")][-1]
-    f = line.replace(",", " ").replace("(", " ").split()
-    return dict(opening=float(f[2]), steps=int(f[4]), object=float(f[7]), contact=int(f[10]),
-                pulses=int(f[12]), missed=int(f[14]), blocked=int(f[16]))
-
-
 def run_steps(count, close, spacing, settings=""):
     prog = programs.gripper_steps(count, close, spacing)
     out = simh.run(settings + prog.script() + examine_results(1) + "show plant\n")
-    return results(out, 1)[0], gripper_line(out)
+    return results(out, 1)[0], parse_show_gripper(out)
 
 
 def test_gripper_mechanics_unit_tests():
@@ -66,7 +59,7 @@ def test_bad_settings_leave_the_gripper_as_it_was():
                    "set plant gripper object=2.5\nset plant gripper pullout=0\n"
                    "set plant gripper kv=3\nset plant object=1\nset plant gripper opening=0.2\n"
                    "set plant gripper\nshow plant\n")
-    g = gripper_line(out)
+    g = parse_show_gripper(out)
     assert (g["object"], g["steps"]) == (0.5, 200)
     assert "OBJECT needs a number" in out
     assert "OBJECT is a width in inches, 0 (none) to 2" in out

@@ -4,8 +4,7 @@ import math
 
 import numpy as np
 
-SQUARE = [(0, 0), (3200, 0), (3200, 3200), (0, 3200), (0, 0)]
-PLANE = 400
+from harness.continuation_runs import PLANE, SQUARE, circle, vias_text as vias  # noqa: F401
 
 
 def load(boot, servo_block=None, trace=True):
@@ -17,10 +16,6 @@ def load(boot, servo_block=None, trace=True):
     r.send("1040 LOAD")
     r.send("Set.Up.Robot")
     return r
-
-
-def vias(points, z=PLANE):
-    return " ".join(f"{x} {y} {z} 0 Via" for x, y in points)
 
 
 def paul_phases(start, points, speed, tau):

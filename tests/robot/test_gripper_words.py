@@ -14,10 +14,8 @@ from continuation import load
 
 
 def gripper(r):
-    line = [ln for ln in r.simh("show plant").splitlines() if "gripper" in ln][-1]
-    f = line.replace(",", " ").replace("(", " ").split()
-    return dict(opening=float(f[2]), contact=int(f[10]), pulses=int(f[12]),
-                missed=int(f[14]), blocked=int(f[16]))
+    g = r.gripper()
+    return {k: g[k] for k in ("opening", "contact", "pulses", "missed", "blocked")}
 
 
 @pytest.fixture

@@ -13,12 +13,12 @@ segments (harness/path_metrics.py). Measured on this build (docs/continuation.md
   2400 counts/s with Blend 6 it strays 258 counts from the first segments;
   with Blend 24 every segment is within 31 counts (and the segments, shorter
   than two blends, are slowed)."""
-import math
-
 from harness import path_metrics as pm
 from harness import trace as tr
 
-from continuation import PLANE, SQUARE, load, vias
+from harness.continuation_runs import run_path
+
+from continuation import PLANE, SQUARE, circle, load
 
 
 def start(boot, servo_block=None, blend=6):
@@ -30,12 +30,7 @@ def start(boot, servo_block=None, blend=6):
 
 
 def run(r, origin, points, speed=2400):
-    r.send("Path.Clear")
-    for k in range(0, len(points), 6):
-        r.send(vias(points[k:k + 6]))
-    t0 = r.time()
-    r.send(f"{speed} Path.Run Path.Wait")
-    t1 = r.time()
+    t0, t1 = run_path(r, points, speed)
     r.idle(1.0)
     r.close()                                    # the trace is complete
     return pm.measure(pm.path_samples(tr.read(r.trace_path), t0, t1 + 1.0),
@@ -63,15 +58,8 @@ def test_square_on_the_corrected_servo(boot):
     assert end_error(m) <= 8
 
 
-def circle_points():
-    """Block 1050's 16 via points round (1600, 1600), radius 1600, from angle 0."""
-    cos = [round(10000 * math.cos(k * math.pi / 8)) for k in range(16)]
-    scaled = [int(1600 * c / 10000) for c in cos]       # */ divides symmetrically
-    return [(1600 + scaled[k % 16], 1600 + scaled[(k - 4) % 16]) for k in range(17)]
-
-
 def test_corrected_servo_needs_gentle_blends(boot):
-    pts = circle_points()
+    pts = circle()          # block 1050's 16 via points, radius 2 in
     worst = {}
     for blend in (6, 24):
         r = start(boot, 1030, blend)
