@@ -61,7 +61,9 @@ def test_bad_paths_are_refused_and_nothing_is_lost(boot):
     assert not ok and "Path.Run: no via points" in err
     ok, _, err = r.reply("Path.Clear 100 0 400 0 Via 10 Path.Run")
     assert not ok and "speed 60..5000" in err
-    r.send("Path.Clear")
+    ok, _, err = r.reply("0 Blend ! 1200 Path.Run")          # a blend of no ticks
+    assert not ok and "Blend 1..599" in err
+    r.send("6 Blend ! Path.Clear")
     ok, _, err = r.reply("33 0 DO I 10 * 0 400 0 Via LOOP")
     assert not ok and "Via: the path is full" in err
     assert r.send("Via.Count ?").split() == ["32"]
