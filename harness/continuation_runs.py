@@ -1,4 +1,4 @@
-"""The runs behind docs/continuation.md: the continuous-path blocks (1040-1049)
+"""The runs behind docs/continuation.md: the continuous-path blocks (1040-1053)
 and the gripper on the emulated robot, on the printed servo and on the
 proposed corrected one (block 1030), in lock-step with simulated time
 (harness/robot.py): the same command gives the same traces and figures.
@@ -9,7 +9,7 @@ For each servo, writes OUTDIR/SERVO/square-SPEED.csv (a 4-inch square at
 2400 and 4800 counts/s), points.csv (the same corners by Abs.Move
 Move.Complete?), circle.csv (16 via points, radius 2 inches, 2400 counts/s),
 the square and circle again with blends of BLEND_SLOW ticks (-slow.csv), and,
-for the printed servo, pick.csv (block 1052's pick and place); prints the
+for the printed servo, pick.csv (block 1062's pick and place); prints the
 measurements the docs quote (harness/path_metrics.py). With --figures, draws the docs' figures from
 those traces into DIR (continuation-SERVO-NAME-xy.png, continuation-pick-gripper.png).
 """
@@ -26,7 +26,7 @@ from harness.robot import Robot
 
 ROOT = Path(__file__).resolve().parent.parent
 DISK = ROOT / "build" / "robot.dsk"
-PLANE = 400                                  # z of the drawings (block 1050's Plane)
+PLANE = 400                                  # z of the drawings (block 1060's Plane)
 SIDE = 3200                                  # 4 inches
 SQUARE = [(0, 0), (SIDE, 0), (SIDE, SIDE), (0, SIDE), (0, 0)]
 CENTRE, RADIUS = (1600, 1600), 1600
@@ -36,7 +36,7 @@ SERVO_BLOCK = {"printed": None, "ramp": 1030}
 
 
 def circle():
-    """Block 1050's Circle: 16 via points from angle 0, cosines to 4 places."""
+    """Block 1060's Circle: 16 via points from angle 0, cosines to 4 places."""
     cos = [round(10000 * math.cos(k * math.pi / 8)) for k in range(16)]
     cx, cy = CENTRE
     return [(cx + _scaled(cos[k % 16]), cy + _scaled(cos[(k - 4) % 16])) for k in range(17)]
@@ -148,11 +148,11 @@ def point_to_point(out, servo, tmp):
 
 def pick_and_place(out, tmp):
     with session(out / "pick.csv", "printed", tmp) as r:
-        r.send("1050 LOAD")               # Plane, Go.To (and the shapes demo)
+        r.send("1060 LOAD")               # Plane, Go.To (and the shapes demo)
         r.simh("set plant gripper object=1")
         t0 = r.time()
-        said = r.send("1052 LOAD")
-        print(f"  pick and place (1052 LOAD): {said.strip()!r}, {r.time() - t0:.2f} s, "
+        said = r.send("1062 LOAD")
+        print(f"  pick and place (1062 LOAD): {said.strip()!r}, {r.time() - t0:.2f} s, "
               f"from {t0:.2f} s")
     return out / "pick.csv"
 

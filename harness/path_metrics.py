@@ -1,5 +1,5 @@
 """How closely a traced x-y path follows its commanded straight segments
-(the continuous-path blocks 1040-1049, docs/continuation.md). Pure geometry on
+(the continuous-path blocks 1040-1053, docs/continuation.md). Pure geometry on
 numpy arrays; no plotting, no simulator.
 
     xy = path_samples(trace, start, end)      # PathSamples: time, x, y (counts)

@@ -1,4 +1,4 @@
-"""Figures for the project's continuation (blocks 1040-1049): the x-y path
+"""Figures for the project's continuation (blocks 1040-1053): the x-y path
 against its commanded segments, and the gripper against time.
 
     fig = xy_figure(trace, corners=[(0, 0), (3200, 0), ...], windows=[(6, 14)])

@@ -1,5 +1,5 @@
 # mk/continuation.mk: the project's continuation (issue 10): continuous-path
-# motion and the gripper (blocks 1040-1052, docs/continuation.md).
+# motion and the gripper (blocks 1040-1053 and 1060-1062, docs/continuation.md).
 #   make bench-continuation   Interrupt.Path's KDF11-A cost per tick (part of make bench)
 #   make continuation-runs    the traces behind docs/continuation.md, in
 #                             build/continuation/ (printed servo, and block 1030),

@@ -19,7 +19,7 @@ def load(boot, servo_block=None, trace=True):
 
 
 def paul_phases(start, points, speed, tau):
-    """The phases Plan (blocks 1046-1048) lays down, in exact arithmetic:
+    """The phases Plan (blocks 1046-1049) lays down, in exact arithmetic:
     [(ticks, acceleration per tick^2 as an x-y vector)], velocities in counts
     per tick. Segment ticks as the FORTH rounds them."""
     phases, was, here = [], np.zeros(2), np.array(start, float)

@@ -1,4 +1,4 @@
-"""The gripper words of blocks 1044 and 1049 (the project's continuation),
+"""The gripper words of blocks 1044 and 1053 (the project's continuation),
 stepping the gripper from the 60 Hz interrupt (Interrupt.Path) one pulse a
 tick, against the plant's gripper (pdp11-devices/gripper.h): 100 steps an
 inch, fully open at power-up, pull-out rate 300 steps/s, a finger switch on

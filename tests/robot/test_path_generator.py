@@ -1,4 +1,4 @@
-"""Blocks 1040-1049 (the project's continuation, not 1983 code): the set-point
+"""Blocks 1040-1053 (the project's continuation, not 1983 code): the set-point
 generator alone. Path.Step is run one tick at a time by a CODE word typed at
 the prompt (the servo on vector 100 does not run it), and the x-y set-points it
 leaves in Desire.Pos are compared with Paul's continuous trajectory computed

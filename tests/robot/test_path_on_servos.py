@@ -1,4 +1,4 @@
-"""Blocks 1040-1049 driving the robot through the printed servo (blocks
+"""Blocks 1040-1053 driving the robot through the printed servo (blocks
 1000-1012) and through the proposed corrected one (block 1030): a 4-inch
 square at 2400 counts/s, traced by the plant, measured against its commanded
 segments (harness/path_metrics.py). Measured on this build (docs/continuation.md):
@@ -59,7 +59,7 @@ def test_square_on_the_corrected_servo(boot):
 
 
 def test_corrected_servo_needs_gentle_blends(boot):
-    pts = circle()          # block 1050's 16 via points, radius 2 in
+    pts = circle()          # block 1060's 16 via points, radius 2 in
     worst = {}
     for blend in (6, 24):
         r = start(boot, 1030, blend)
