@@ -8,7 +8,8 @@ proposed corrected one (block 1030), in lock-step with simulated time
 For each servo, writes OUTDIR/SERVO/square-SPEED.csv (a 4-inch square at
 2400 and 4800 counts/s), points.csv (the same corners by Abs.Move
 Move.Complete?), circle.csv (16 via points, radius 2 inches, 2400 counts/s),
-the square and circle again with blends of BLEND_SLOW ticks (-slow.csv), and,
+the square and circle again with blends of BLEND_SLOW ticks (-slow.csv) and
+by Spline.Run (-spline.csv), and,
 for the printed servo, pick.csv (block 1062's pick and place); prints the
 measurements the docs quote (harness/path_metrics.py). With --figures, draws the docs' figures from
 those traces into DIR (continuation-SERVO-NAME-xy.png, continuation-pick-gripper.png).
@@ -69,14 +70,14 @@ def session(trace, servo, disk_dir, blend=BLEND, sample=60):
     return r
 
 
-def run_path(r, points, speed=SPEED):
+def run_path(r, points, speed=SPEED, run="Path.Run"):
     """Give the path (from the current point); (start, end) simulated seconds
-    from Path.Run to Path.Wait's return."""
+    from Path.Run (or `run`: Spline.Run) to Path.Wait's return."""
     r.send("Path.Clear")
     for k in range(0, len(points), 6):           # a console line holds 255 characters
         r.send(vias_text(points[k:k + 6]))
     t0 = r.time()
-    r.send(f"{speed} Path.Run Path.Wait")
+    r.send(f"{speed} {run} Path.Wait")
     return t0, r.time()
 
 
@@ -87,9 +88,10 @@ def counters(r):
 FIGURES = []          # (trace path, corners, window) of each path run, for --figures
 
 
-def report_path(name, trace_path, corners, t0, t1, end_counters):
+def report_path(name, trace_path, corners, t0, t1, end_counters, round_=False):
     FIGURES.append((trace_path, corners, (t0, t1 + 1.0)))
-    m = pm.measure(pm.path_samples(tr.read(trace_path), t0, t1 + 1.0), corners)
+    xy = pm.path_samples(tr.read(trace_path), t0, t1 + 1.0)
+    m = pm.measure(xy, corners)
     print(f"  {name}: Path.Run to Path.Wait {t1 - t0:.3f} s")
     print("    largest deviation per segment, counts: "
           + " ".join(f"{d:.0f}" for d in m.segment_max))
@@ -97,28 +99,35 @@ def report_path(name, trace_path, corners, t0, t1, end_counters):
           + " ".join(f"{d:.0f}" for d in m.via_miss))
     print("    speed there, counts/s: " + " ".join(f"{v:.0f}" for v in m.via_speed))
     print(f"    counters 1 s after the end: {end_counters}")
+    if round_:
+        during = (xy.time >= t0) & (xy.time <= t1)
+        radial = abs(pm.radial_error(xy, CENTRE, RADIUS)[during])
+        print(f"    distance from the true circle while running: at most {radial.max():.0f} "
+              "counts")
     return m
 
 
-def square(out, servo, tmp, speed, blend=BLEND, name=None):
+def square(out, servo, tmp, speed, blend=BLEND, name=None, run="Path.Run"):
     name = name or f"square-{speed}.csv"
     with session(out / name, servo, tmp, blend) as r:
-        t0, t1 = run_path(r, SQUARE[1:], speed)
+        t0, t1 = run_path(r, SQUARE[1:], speed, run)
         r.idle(1.0)
-        report_path(f"square 4 in at {speed} counts/s, Blend {blend} ({name})", out / name,
+        how = "by Spline.Run" if run == "Spline.Run" else f"Blend {blend}"
+        report_path(f"square 4 in at {speed} counts/s, {how} ({name})", out / name,
                     SQUARE, t0, t1, counters(r))
 
 
-def circle_run(out, servo, tmp, blend=BLEND, name="circle.csv"):
+def circle_run(out, servo, tmp, blend=BLEND, name="circle.csv", run="Path.Run"):
     with session(out / name, servo, tmp, blend) as r:
         r.send(f"Path.Clear {CENTRE[0] + RADIUS} {CENTRE[1]} {PLANE} 0 Via 1200 Path.Run "
                "Path.Wait")
         r.idle(0.5)
         pts = circle()
-        t0, t1 = run_path(r, pts[1:])
+        t0, t1 = run_path(r, pts[1:], SPEED, run)
         r.idle(1.0)
-        report_path(f"circle r 2 in, 16 via points, at 2400 counts/s, Blend {blend}",
-                    out / name, pts, t0, t1, counters(r))
+        how = "by Spline.Run" if run == "Spline.Run" else f"Blend {blend}"
+        report_path(f"circle r 2 in, 16 via points, at 2400 counts/s, {how} ({name})",
+                    out / name, pts, t0, t1, counters(r), round_=True)
 
 
 # waits until x and y are within 30 counts of Desire.Pos (the printed servo's
@@ -188,6 +197,8 @@ def main(argv=None):
             circle_run(out, servo, tmp)
             square(out, servo, tmp, SPEED, BLEND_SLOW, "square-slow.csv")
             circle_run(out, servo, tmp, BLEND_SLOW, "circle-slow.csv")
+            square(out, servo, tmp, SPEED, name="square-spline.csv", run="Spline.Run")
+            circle_run(out, servo, tmp, name="circle-spline.csv", run="Spline.Run")
             point_to_point(out, servo, tmp)
             if servo == "printed":
                 pick = pick_and_place(out, tmp)

@@ -8,6 +8,7 @@ numpy arrays; no plotting, no simulator.
                        # nearest segment it is, counts
     m.via_miss         # per via point: closest approach, counts
     m.via_speed        # per via point: speed at that closest approach, counts/s
+    radial_error(xy, centre, radius)   # per sample, from a circle, counts
 
 Samples are the trace rows where all four axes were sampled together (SAMPLE
 per second), positions are the axis counters (what the FORTH reads), so a
@@ -38,6 +39,11 @@ def path_samples(trace, start=None, end=None):
     xs, ys = trace.axis("X").window(start, end), trace.axis("Y").window(start, end)
     common, ix, iy = np.intersect1d(xs.time, ys.time, return_indices=True)
     return PathSamples(common, xs.counter[ix].astype(float), ys.counter[iy].astype(float))
+
+
+def radial_error(xy, centre, radius):
+    """Per sample: distance from the centre less the radius (counts; + outside)."""
+    return np.hypot(xy.x - centre[0], xy.y - centre[1]) - radius
 
 
 def _distances(px, py, a, b):

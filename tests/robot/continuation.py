@@ -46,3 +46,27 @@ def paul_position(start, phases, t):
         if left <= 0:
             break
     return q
+
+
+def spline_points(start, points, speed):
+    """The set-points Spline.Plan (blocks 1050-1052) aims at, in exact
+    arithmetic: per segment a Hermite cubic over N ticks from P0 to P1 with
+    velocities m0, m1 (counts per tick; 0 at both ends of the path, at an
+    inner via point (P(i+1) - P(i-1)) / (N(i) + N(i+1))), sampled at ticks
+    1..N of each segment."""
+    pts = [np.array(start, float)] + [np.array(p, float) for p in points]
+
+    def ticks(a, b):
+        d = b - a
+        return max(2, (math.isqrt(int(d @ d)) * 60 + speed // 2) // speed)
+
+    n = [ticks(a, b) for a, b in zip(pts[:-1], pts[1:])]
+    m = [np.zeros(2)] + [(pts[i + 1] - pts[i - 1]) / (n[i - 1] + n[i])
+                         for i in range(1, len(pts) - 1)] + [np.zeros(2)]
+    out = []
+    for i, N in enumerate(n):
+        p0, p1, m0, m1 = pts[i], pts[i + 1], m[i], m[i + 1]
+        c = (3 * (p1 - p0) / N - 2 * m0 - m1) / N
+        d = (m0 + m1 - 2 * (p1 - p0) / N) / N ** 2
+        out += [p0 + m0 * s + c * s * s + d * s ** 3 for s in range(1, N + 1)]
+    return np.array(out), n

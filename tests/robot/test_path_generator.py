@@ -14,17 +14,20 @@ import math
 
 import numpy as np
 
-from continuation import SQUARE, load, paul_phases, paul_position, vias
+from continuation import SQUARE, circle, load, paul_phases, paul_position, spline_points, vias
 
 TICK_PATH = ("CODE Path.Tick Path.Step NEXT,",
              ": Trace.Path ( -- ) BEGIN Path.Tick Desire.Pos @ . "
              "Desire.Pos 2+ @ . Path.Done? END ;")
 
 
-def setpoints(r, points, speed):
+def setpoints(r, points, speed, run="Path.Run"):
     for line in TICK_PATH:
         r.send(line)
-    r.send(f"Path.Clear {vias(points, 0)} {speed} Path.Run")
+    r.send("Path.Clear")
+    for k in range(0, len(points), 6):
+        r.send(vias(points[k:k + 6], 0))
+    r.send(f"{speed} {run}")
     out = [int(w) for w in r.send("Trace.Path").split()]
     return np.array(out, float).reshape(-1, 2)
 
@@ -53,6 +56,24 @@ def test_short_segments_are_stretched_to_two_blends(boot):
     phases = paul_phases((0, 0), points, 3000, 6)
     want = np.array([paul_position((0, 0), phases, k + 0.5) for k in range(1, len(got) + 1)])
     assert np.abs(got - want).max() <= 1.0 and tuple(got[-1]) == (0, 300)
+
+
+def test_spline_setpoints_follow_the_hermite_cubics(boot):
+    # Spline.Run: the set-points are the cubics' values at whole ticks, and
+    # every via point is passed exactly (within rounding)
+    r = load(boot, trace=False)
+    for points, speed in ((SQUARE[1:], 2400), (circle()[1:], 2400)):
+        start = (0, 0) if points[0] == SQUARE[1] else (3200, 1600)
+        if start != (0, 0):
+            r.send(f"Path.Clear {start[0]} {start[1]} 0 0 Via 1200 Path.Run")
+            r.send("BEGIN Path.Tick Path.Done? END")
+        got = setpoints(r, points, speed, "Spline.Run")
+        want, n = spline_points(start, points, speed)
+        assert len(got) == sum(n)
+        assert np.abs(got - want).max() <= 3.0, (points[0], np.abs(got - want).max())
+        ends = np.cumsum(n) - 1
+        assert np.abs(got[ends] - np.array(points)).max() <= 3.0
+        assert tuple(got[-1]) == tuple(points[-1])
 
 
 def test_bad_paths_are_refused_and_nothing_is_lost(boot):
