@@ -19,7 +19,9 @@ def test_a_path_on_its_segments_deviates_by_nothing():
     path = [(x, 0) for x in range(0, 101, 5)] + [(100, y) for y in range(5, 101, 5)]
     m = pm.measure(samples(path), CORNERS)
     assert m.segment_max == pytest.approx([0, 0]) and m.via_miss == pytest.approx([0, 0])
-    assert m.via_speed[0] == pytest.approx(500.0)            # 5 counts per 0.01 s
+    assert m.via_speed[1] == pytest.approx(500.0)            # 5 counts per 0.01 s
+    # at the corner the central differences span it: |(5, 5)| / 0.02 s
+    assert m.via_speed[0] == pytest.approx(50 ** 0.5 / 0.02)
 
 
 def test_a_cut_corner_and_an_offset_segment():
