@@ -11,19 +11,41 @@ q(k + 1/2) - a/8, and rounds to the nearest count); the path ends exactly on
 the last via point; the closest approach to a square's corner is Paul's
 |v2 - v1| tau / 4 = 84.9 counts at 2400 counts/s, Blend 6."""
 import math
+import shutil
 
 import numpy as np
+import pytest
 
-from continuation import SQUARE, circle, load, paul_phases, paul_position, spline_points, vias
+from harness.robot import Robot
+
+from continuation import SQUARE, circle, paul_phases, paul_position, spline_points, vias
 
 TICK_PATH = ("CODE Path.Tick Path.Step NEXT,",
              ": Trace.Path ( -- ) BEGIN Path.Tick Desire.Pos @ . "
              "Desire.Pos 2+ @ . Path.Done? END ;")
 
 
+@pytest.fixture(scope="module")
+def gen(tmp_path_factory):
+    """One robot for the module: 1000 LOAD 1040 LOAD Set.Up.Robot, Path.Tick
+    and Trace.Path defined; each test starts its path at Desire.Pos 0 0 0 0."""
+    from conftest import DISK
+    disk = tmp_path_factory.mktemp("gen") / "rl0.dsk"
+    shutil.copy(DISK, disk)
+    with Robot(disk=disk, timeout=20) as r:
+        r.send("1000 LOAD 1040 LOAD Set.Up.Robot")
+        for line in TICK_PATH:
+            r.send(line)
+        yield r
+
+
+@pytest.fixture
+def r(gen):
+    gen.send("Path.Clear 6 Blend ! Desire.Pos Zero.Array")
+    return gen
+
+
 def setpoints(r, points, speed, run="Path.Run"):
-    for line in TICK_PATH:
-        r.send(line)
     r.send("Path.Clear")
     for k in range(0, len(points), 6):
         r.send(vias(points[k:k + 6], 0))
@@ -32,8 +54,7 @@ def setpoints(r, points, speed, run="Path.Run"):
     return np.array(out, float).reshape(-1, 2)
 
 
-def test_setpoints_follow_pauls_trajectory(boot):
-    r = load(boot, trace=False)
+def test_setpoints_follow_pauls_trajectory(r):
     got = setpoints(r, SQUARE[1:], 2400)
     phases = paul_phases(SQUARE[0], SQUARE[1:], 2400, 6)
     assert len(got) == sum(t for t, _ in phases)             # 332 ticks
@@ -46,10 +67,8 @@ def test_setpoints_follow_pauls_trajectory(boot):
         assert abs(closest - corner) <= 1.5, (via, closest, corner)
 
 
-def test_short_segments_are_stretched_to_two_blends(boot):
+def test_short_segments_are_stretched_to_two_blends(r):
     # 300-count segments at 3000 counts/s would take 6 ticks; a blend takes 12
-    r = load(boot, trace=False)
-    r.send("6 Blend !")
     points = [(300, 0), (300, 300), (0, 300)]
     got = setpoints(r, points, 3000)
     assert len(got) == 3 * 12 + 12
@@ -58,10 +77,9 @@ def test_short_segments_are_stretched_to_two_blends(boot):
     assert np.abs(got - want).max() <= 1.0 and tuple(got[-1]) == (0, 300)
 
 
-def test_spline_setpoints_follow_the_hermite_cubics(boot):
+def test_spline_setpoints_follow_the_hermite_cubics(r):
     # Spline.Run: the set-points are the cubics' values at whole ticks, and
     # every via point is passed exactly (within rounding)
-    r = load(boot, trace=False)
     for points, speed in ((SQUARE[1:], 2400), (circle()[1:], 2400)):
         start = (0, 0) if points[0] == SQUARE[1] else (3200, 1600)
         if start != (0, 0):
@@ -76,8 +94,7 @@ def test_spline_setpoints_follow_the_hermite_cubics(boot):
         assert tuple(got[-1]) == tuple(points[-1])
 
 
-def test_bad_paths_are_refused_and_nothing_is_lost(boot):
-    r = load(boot, trace=False)
+def test_bad_paths_are_refused_and_nothing_is_lost(r):
     ok, _, err = r.reply("Path.Clear 1200 Path.Run")
     assert not ok and "Path.Run: no via points" in err
     ok, _, err = r.reply("Path.Clear 100 0 400 0 Via 10 Path.Run")
