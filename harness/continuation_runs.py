@@ -157,7 +157,7 @@ def point_to_point(out, servo, tmp):
 
 def pick_and_place(out, tmp):
     with session(out / "pick.csv", "printed", tmp) as r:
-        r.send("1060 LOAD")               # Plane, Go.To (and the shapes demo)
+        r.send("1060 LOAD", timeout=60)   # Plane, Go.To (and the shapes demo)
         r.simh("set plant gripper object=1")
         t0 = r.time()
         said = r.send("1062 LOAD")

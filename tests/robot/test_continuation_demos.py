@@ -1,7 +1,8 @@
 """The continuation's demonstration blocks as a user loads them: 1060 (set up,
 z up, a 4-inch square and a 2-inch-radius circle by via points, on the
-printed servo) and 1062 (pick and place: over A, down, grasp, up and over to
-B in one path, release), with and without a part."""
+printed servo; the circle by Path.Run, then by Spline.Run) and 1062 (pick and
+place: over A, down, grasp, up and over to B in one path, release), with and
+without a part."""
 
 
 def counters(r):
@@ -11,7 +12,7 @@ def counters(r):
 def test_shapes_then_pick_and_place(boot):
     r = boot(trace=False)
     r.send("1000 LOAD 1040 LOAD")
-    assert r.send("1060 LOAD") == ""
+    assert r.send("1060 LOAD", timeout=60) == ""
     x, y, z, _ = counters(r)
     assert abs(x) <= 40 and abs(y) <= 40 and abs(z - 400) <= 40     # back at 0 0 Plane
     r.simh("set plant gripper object=1")
