@@ -27,13 +27,15 @@ TICK_PATH = ("CODE Path.Tick Path.Step NEXT,",
 
 @pytest.fixture(scope="module")
 def gen(tmp_path_factory):
-    """One robot for the module: 1000 LOAD 1040 LOAD Set.Up.Robot, Path.Tick
-    and Trace.Path defined; each test starts its path at Desire.Pos 0 0 0 0."""
+    """One robot for the module: 1000 LOAD 1040 LOAD Set.Up.Robot, the clock's
+    interrupt off and Interrupt.Path on its vector (Path.Run wants it there;
+    here nothing runs it but Path.Tick), Path.Tick and Trace.Path defined;
+    each test starts its path at Desire.Pos 0 0 0 0."""
     from conftest import DISK
     disk = tmp_path_factory.mktemp("gen") / "rl0.dsk"
     shutil.copy(DISK, disk)
     with Robot(disk=disk, timeout=20) as r:
-        r.send("1000 LOAD 1040 LOAD Set.Up.Robot")
+        r.send("1000 LOAD 1040 LOAD Set.Up.Robot 0 177546O ! Path.Servo")
         for line in TICK_PATH:
             r.send(line)
         yield r
@@ -106,3 +108,10 @@ def test_bad_paths_are_refused_and_nothing_is_lost(r):
     assert not ok and "Via: the path is full" in err
     assert r.send("Via.Count ?").split() == ["32"]
     assert r.send("Path.Done? .").split() == ["-1"]
+    # the generator not on the clock's vector: Path.Run and the gripper refuse
+    r.send("' Interrupt.Servo 100O !")
+    for line in ("1200 Path.Run", "10 1 Grip.Move"):
+        ok, _, err = r.reply(line)
+        assert not ok and "type Path.Servo first" in err
+    r.send("Path.Servo")
+    assert r.send("Grip.Left ?").split() == ["0"]
