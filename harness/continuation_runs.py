@@ -158,11 +158,12 @@ def point_to_point(out, servo, tmp):
 def pick_and_place(out, tmp):
     with session(out / "pick.csv", "printed", tmp) as r:
         r.send("1060 LOAD", timeout=60)   # Plane, Go.To (and the shapes demo)
-        r.simh("set plant gripper object=1")
+        r.simh("set plant gripper object=1,partx=800,party=800,partz=400")
         t0 = r.time()
         said = r.send("1062 LOAD")
-        print(f"  pick and place (1062 LOAD): {said.strip()!r}, {r.time() - t0:.2f} s, "
-              f"from {t0:.2f} s")
+        print(f"  pick and place (1062 LOAD), a 1 in part at 800 800 400: {said.strip()!r}, "
+              f"{r.time() - t0:.2f} s, from {t0:.2f} s; the part is now at "
+              f"{r.gripper()['part']}")
     return out / "pick.csv"
 
 

@@ -42,13 +42,16 @@ def parse_show_plant(text):
 
 def parse_show_gripper(text):
     """SHOW PLANT's (last) gripper line -> {opening (in), steps, object (in),
-    contact, pulses, missed, blocked}."""
+    contact, pulses, missed, blocked, part}: part is None, or (x, y, z) in
+    counts where a placed part is."""
     lines = [ln for ln in text.splitlines() if ln.strip().startswith("gripper ")]
     if not lines:
         raise ValueError(f"no gripper line in SHOW PLANT's output: {text[-200:]!r}")
-    f = lines[-1].replace(",", " ").replace("(", " ").split()
+    line, _, part = lines[-1].partition(", part at ")
+    f = line.replace(",", " ").replace("(", " ").split()
     return dict(opening=float(f[2]), steps=int(f[4]), object=float(f[7]), contact=int(f[10]),
-                pulses=int(f[12]), missed=int(f[14]), blocked=int(f[16]))
+                pulses=int(f[12]), missed=int(f[14]), blocked=int(f[16]),
+                part=tuple(float(v) for v in part.split()[:3]) if part else None)
 
 
 class Robot(ScriptedMachine):

@@ -13,6 +13,8 @@ void gripper_init (gripper *g)
     g->last_step = -INFINITY;
     g->step_line = g->dir_line = 0;
     g->pulses = g->missed = g->blocked = 0;
+    g->part = g->part_steps = 0;
+    g->part_at[0] = g->part_at[1] = g->part_at[2] = 0;
 }
 
 static int one_step (gripper *g, double t)
@@ -60,11 +62,45 @@ const char *gripper_set_object (gripper *g, double width)
         return "OBJECT is a width in inches, 0 (none) to 2";
     /* the object's width rounded up to whole steps: the fingers stop there */
     int s = (int) ceil (width * GRIPPER_STEPS_PER_INCH - 1e-9);
-    if (s > g->steps)
+    if (s > g->steps && !g->part)
         return "the fingers are closer than that: open them before placing the object";
-    g->object_steps = s;
+    if (g->part && gripper_contact (g))
+        return "the fingers hold the part: open them first";
+    g->object_steps = g->part ? 0 : s;
+    g->part_steps = s;
     g->object_in = width;
+    if (s == 0)
+        g->part = 0;                               /* no object at all */
     return NULL;
+}
+
+const char *gripper_place_part (gripper *g, int axis, double where)
+{
+    if (axis < 0 || axis > 2 || !isfinite (where) || fabs (where) > 100000)
+        return "a part's position is x, y or z in counts";
+    if (g->object_in <= 0)
+        return "give the part's width first (OBJECT=width)";
+    if (gripper_contact (g))
+        return "the fingers hold the part: open them first";
+    g->part = 1;
+    g->part_at[axis] = where;
+    g->object_steps = 0;                           /* until the hand is there */
+    return NULL;
+}
+
+void gripper_hand_at (gripper *g, const double hand[3])
+{
+    int at = 1;
+    if (!g->part)
+        return;
+    if (gripper_contact (g)) {                     /* held: it goes with the hand */
+        for (int i = 0; i < 3; i++)
+            g->part_at[i] = hand[i];
+        return;
+    }
+    for (int i = 0; i < 3; i++)
+        at &= fabs (hand[i] - g->part_at[i]) <= GRIPPER_CAPTURE;
+    g->object_steps = at && g->steps > g->part_steps ? g->part_steps : 0;
 }
 
 const char *gripper_set_pullout (gripper *g, double rate)
@@ -80,7 +116,7 @@ const char *gripper_set_opening (gripper *g, double opening)
     if (!isfinite (opening) || opening < 0 || opening > (double) GRIPPER_MAX_STEPS / GRIPPER_STEPS_PER_INCH)
         return "OPENING is in inches, 0 to 2";
     int s = (int) lround (opening * GRIPPER_STEPS_PER_INCH);
-    if (s < g->object_steps)
+    if (s < g->object_steps || (g->part && gripper_contact (g)))
         return "the object is wider than that: take it out first (OBJECT=0)";
     g->steps = s;
     return NULL;

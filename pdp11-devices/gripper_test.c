@@ -96,12 +96,41 @@ static void test_bad_settings (void)
            g.steps == 50, "OPENING narrower than the object refused", g.steps, 50);
 }
 
+/* A part in the workspace: between the fingers only at the hand, carried while
+   gripped, left where the fingers let it go. */
+static void test_part_in_the_workspace (void)
+{
+    gripper g;
+    double away[3] = { 0, 0, 400 }, at_a[3] = { 830, 770, 400 }, b[3] = { 3200, 2400, 1600 };
+    gripper_init (&g);
+    int placed = gripper_set_object (&g, 1.0) == NULL && gripper_place_part (&g, 0, 800) == NULL &&
+        gripper_place_part (&g, 1, 800) == NULL && gripper_place_part (&g, 2, 400) == NULL;
+    gripper_hand_at (&g, away);
+    pulses (&g, 0, 220, 0.01, 1);
+    check (placed && g.steps == 0 && !gripper_contact (&g),
+           "hand away from the part: the fingers close on nothing", g.steps, 0);
+    pulses (&g, 3, 220, 0.01, 0);
+    gripper_hand_at (&g, at_a);                 /* within 80 counts on each axis */
+    pulses (&g, 6, 120, 0.01, 1);
+    check (g.steps == 100 && gripper_contact (&g), "at the part: gripped at 1.00 in", g.steps, 100);
+    gripper_hand_at (&g, b);
+    check (g.part_at[0] == 3200 && g.part_at[2] == 1600, "carried with the hand", g.part_at[0], 3200);
+    check (gripper_set_object (&g, 0.5) != NULL && gripper_place_part (&g, 0, 0) != NULL,
+           "no moving or resizing a gripped part", g.part_at[0], 3200);
+    pulses (&g, 9, 30, 0.01, 0);
+    gripper_hand_at (&g, away);
+    check (!gripper_contact (&g) && g.part_at[0] == 3200 && g.part_at[1] == 2400,
+           "let go: it stays at B", g.part_at[1], 2400);
+    check (gripper_place_part (&g, 3, 0) != NULL, "only x, y or z", 0, 0);
+}
+
 int main (void)
 {
     test_steps_below_pullout ();
     test_missed_above_pullout ();
     test_stops_and_object ();
     test_bad_settings ();
+    test_part_in_the_workspace ();
     printf ("%d checks, %d failed\n", checks, failures);
     return failures != 0;
 }

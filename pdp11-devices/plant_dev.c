@@ -16,14 +16,18 @@
      the gripper (the project's continuation, docs/continuation.md):
      SET PLANT GRIPPER OBJECT=1.0   (an object that wide between the fingers,
      inches; 0 = none; refused while the fingers are closer than that),
-     PULLOUT=300 (steps/s the motor follows), OPENING=2 (inches, 0..2)
+     PULLOUT=300 (steps/s the motor follows), OPENING=2 (inches, 0..2);
+     PARTX=, PARTY=, PARTZ= (counts, as the counters read) make the object a
+     part at that place, between the fingers only when the hand is there
+     and carried while gripped (gripper.h); OBJECT=0 removes it
    A rejected value (non-number, out of range, no axis selected) prints why,
    returns a SIMH error and leaves that parameter as it was; modifiers are
    applied left to right. The selection lasts until the end of the command.
    SHOW PLANT: per axis position (counts and inches or degrees), velocity,
    DAC code, commanded velocity, offset, end stop, run line, counter, then
    the parameters, then a line for the gripper (opening, object, contact,
-   step pulses requested, missed, blocked, pull-out rate, its two lines).
+   step pulses requested, missed, blocked, pull-out rate, its two lines,
+   and where a placed part is).
    ATTACH PLANT file.csv: writes the trace (truncating the file), DETACH
    PLANT closes it. Columns: time_s,axis,dac,vcmd,vel,pos,counter (simulated
    seconds, X/Y/Z/T, code, counts/s, counts/s, counts, counter as a signed
@@ -59,8 +63,10 @@ static t_stat plant_set_sample (UNIT *uptr, int32 val, char *cptr, void *desc);
 static t_stat plant_show_global (FILE *st, UNIT *uptr, int32 val, void *desc);
 static t_stat plant_show_axes (FILE *st, UNIT *uptr, int32 val, void *desc);
 
-enum { G_OBJECT, G_PULLOUT, G_OPENING };
-static const char *const gripper_param_names[] = { "OBJECT", "PULLOUT", "OPENING" };
+enum { G_OBJECT, G_PULLOUT, G_OPENING, G_PARTX, G_PARTY, G_PARTZ };
+static const char *const gripper_param_names[] = {
+    "OBJECT", "PULLOUT", "OPENING", "PARTX", "PARTY", "PARTZ"
+};
 
 static UNIT plant_unit = { UDATA (&plant_svc, UNIT_ATTABLE, 0) };
 
@@ -77,6 +83,9 @@ static MTAB plant_mod[] = {
     { MTAB_XTD|MTAB_VDV, G_OBJECT, NULL, "OBJECT", &plant_set_gripper, NULL, NULL },
     { MTAB_XTD|MTAB_VDV, G_PULLOUT, NULL, "PULLOUT", &plant_set_gripper, NULL, NULL },
     { MTAB_XTD|MTAB_VDV, G_OPENING, NULL, "OPENING", &plant_set_gripper, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, G_PARTX, NULL, "PARTX", &plant_set_gripper, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, G_PARTY, NULL, "PARTY", &plant_set_gripper, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, G_PARTZ, NULL, "PARTZ", &plant_set_gripper, NULL, NULL },
     { MTAB_XTD|MTAB_VDV, 0, NULL, "SEED", &plant_set_seed, NULL, NULL },
     { MTAB_XTD|MTAB_VDV, 0, NULL, "SAMPLE", &plant_set_sample, NULL, NULL },
     { MTAB_XTD|MTAB_VDV, 0, "SETTINGS", NULL, NULL, &plant_show_global, NULL },
@@ -98,9 +107,21 @@ void plant_dev_init (void)
     gripper_init (&robot_gripper);
 }
 
+/* The hand where the FORTH sees it: each axis's counter reading, unwrapped. */
+static void hand_position (double hand[3])
+{
+    for (int i = 0; i < 3; i++) {
+        const plant_axis *a = &robot_plant.ax[i];
+        hand[i] = a->run ? a->p - a->p0 : a->p;
+    }
+}
+
 void plant_dev_catch_up (void)
 {
+    double hand[3];
     plant_advance (&robot_plant, robot_time ());
+    hand_position (hand);
+    gripper_hand_at (&robot_gripper, hand);
 }
 
 static void trace_row (int axis)
@@ -281,11 +302,13 @@ static t_stat plant_set_gripper (UNIT *uptr, int32 which, char *cptr, void *desc
     plant_dev_catch_up ();
     why = which == G_OBJECT ? gripper_set_object (&robot_gripper, x)
         : which == G_PULLOUT ? gripper_set_pullout (&robot_gripper, x)
-        : gripper_set_opening (&robot_gripper, x);
+        : which == G_OPENING ? gripper_set_opening (&robot_gripper, x)
+        : gripper_place_part (&robot_gripper, which - G_PARTX, x);
     if (why != NULL) {
         printf ("PLANT GRIPPER: %s\n", why);
         return SCPE_ARG;
     }
+    plant_dev_catch_up ();                      /* the part may be at the hand */
     if (gripper_contact (&robot_gripper) != contact)
         drv11_lines_changed ();                 /* the contact switch is REQ B */
     return SCPE_OK;
@@ -352,5 +375,9 @@ static t_stat plant_show_axes (FILE *st, UNIT *uptr, int32 val, void *desc)
              gripper_contact (&robot_gripper), robot_gripper.pulses, robot_gripper.missed,
              robot_gripper.blocked, robot_gripper.pullout, robot_gripper.step_line,
              robot_gripper.dir_line);
+    if (robot_gripper.part)
+        fprintf (st, ", part at %.0f %.0f %.0f%s", robot_gripper.part_at[0],
+                 robot_gripper.part_at[1], robot_gripper.part_at[2],
+                 gripper_contact (&robot_gripper) ? " (held)" : "");
     return SCPE_OK;
 }

@@ -82,3 +82,14 @@ def test_trace_records_the_gripper(tmp_path):
     assert grips[0] > 1.9 and rows[0]["contact"] == "0"
     assert grips == sorted(grips, reverse=True)            # closing, never opening
     assert grips[-1] == 1.8 and rows[-1]["contact"] == "1"
+
+
+def test_a_part_is_placed_with_its_width_first():
+    out = simh.run("set plant gripper partx=800\nset plant gripper object=1,partx=800,"
+                   "party=800,partz=400\nset plant gripper partz=abc\nshow plant\n"
+                   "set plant gripper object=0\nshow plant\n")
+    assert "give the part's width first (OBJECT=width)" in out
+    assert "PARTZ needs a number" in out
+    shows = [parse_show_gripper(chunk) for chunk in out.split("PLANT, seed")[1:]]
+    assert shows[0]["part"] == (800.0, 800.0, 400.0)       # the bad PARTZ changed nothing
+    assert shows[1]["part"] is None                         # OBJECT=0 takes it away
