@@ -40,7 +40,7 @@ def test_two_runs_give_identical_files_and_leave_the_disk_alone(tmp_path):
     assert "1 2 + . 3  ok\n" in transcript and "9 SQ . 81  ok\n" in transcript
     assert "sim> show plant\nPLANT, seed=1983" in transcript
     assert str(tmp_path) not in transcript and "\r" not in transcript
-    assert outputs[0][1].startswith(b"time_s,axis,dac,vcmd,vel,pos,counter\n")
+    assert outputs[0][1].startswith(b"time_s,axis,dac,vcmd,vel,pos,counter,grip,contact,missed\n")
     assert hashlib.sha256(PRISTINE.read_bytes()).hexdigest() == before
 
 
