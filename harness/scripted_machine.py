@@ -29,7 +29,7 @@ from pathlib import Path
 import pexpect
 
 from harness import pty_child
-from harness.simh import MACHINE_INI, PDP11, SimhError
+from harness.simh import MACHINE_INI, PDP11, SimhError, examined
 
 ROOT = Path(__file__).resolve().parent.parent
 KERNEL = ROOT / "build" / "kernel.lda"
@@ -62,6 +62,7 @@ class Answer:
     output: str          # the console output: echo, what the line printed, " ok" or error
     error: str = ""      # the FORTH's error message ("" if none)
     stopped: str = ""    # why the simulator stopped if not at the next prompt
+    running: bool = False  # stopped at the line limit: the line is still running
 
     @property
     def ok(self):
@@ -136,6 +137,11 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         self.trace = trace
         self.boot_output = self._run("go", "boot").output
 
+    def left_with_bye(self, answer):
+        """The line ran the FORTH's BYE: FLUSH, then the HALT at (BYE)."""
+        bye = self.sym.get("(BYE)")
+        return bye is not None and answer.stopped.startswith(f"HALT instruction, PC: {bye + 2:06o}")
+
     # ---- SIMH round trips -------------------------------------------------------------
     def _expect_prompt(self, what):
         i = self.child.expect_exact([PROMPT, pexpect.EOF, pexpect.TIMEOUT])
@@ -208,11 +214,23 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         limit = self.line_limit if limit is None else limit
         return self._limited(self._run(f"step {self._steps(limit)}", "resume"), limit)
 
+    def interrupt(self, limit=None):
+        """Type ^C, as a user stops a runaway line, and run to the next prompt (or
+        for `limit` simulated seconds). The character arrives through the DL11 as
+        a key would (RBUF = 3, DONE, and the receive interrupt when IE is set), not
+        through the ring: the kernel's receive interrupt turns it into THROW -28."""
+        ie = examined(self.simh("examine tti ie")).get("IE")
+        for command in ("deposit tti buf 3", "deposit tti done 1") + (
+                ("deposit tti int 1",) if ie else ()):
+            self.simh(command)
+        return self.resume(limit)
+
     @staticmethod
     def _limited(answer, limit):
         if answer.stopped == "step":
             answer.stopped = (f"no prompt within {limit:g} simulated seconds "
                               "(the line is still running)")
+            answer.running = True
         return answer
 
     def run_to(self, address, limit):

@@ -23,8 +23,10 @@
    and calls it first thing in main(); with -fcommon this file's initialised
    definition is the one linked. robot_vm_init fills the table, replaces the
    console keyboard's service routine (console_pacing.c), wraps the CPU's
-   examine and deposit for the I/O page (io_page_examine.c) and installs
-   sim_vm_post, which scp.c calls after every command (used to end a
+   examine and deposit for the I/O page (io_page_examine.c), wraps the RL02
+   units' service routine so that a written block is fflush()ed and fsync()ed
+   before the controller reports it done (rl_durable.c: FLUSH is durable), and
+   installs sim_vm_post, which scp.c calls after every command (used to end a
    SET PLANT axis selection). */
 #include "robot.h"
 
@@ -62,6 +64,7 @@ static void robot_vm_init (void)
     plant_dev_init ();
     console_pacing_install ();
     io_page_examine_install ();
+    rl_durable_install ();
     sim_vm_post = &robot_vm_post;
 }
 

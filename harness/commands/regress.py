@@ -2,9 +2,11 @@
 import argparse
 
 from harness import regression
+from harness.commands.run import PRISTINE, check_start_image
+from harness.disk import DiskError
 from harness.trace_features import FeatureError
 
-ERRORS = (ValueError, FeatureError)
+ERRORS = (ValueError, FeatureError, DiskError)
 
 DESCRIPTION = """\
 Run the regression scenarios of tests/regression/scenarios (each NAME.script
@@ -14,8 +16,8 @@ goldens from this run and print what changed (review it before committing).
 docs/console.md describes the files.
 
 Exit status: 0 when every scenario run agrees with its goldens (or --update
-finished); 1 when a scenario differs, a named scenario does not exist or a
-features file is bad; 2 for a bad option."""
+finished); 1 when a scenario differs, a named scenario does not exist, a
+features file is bad or build/robot.dsk is unusable; 2 for a bad option."""
 
 
 def configure(parser):
@@ -26,4 +28,10 @@ def configure(parser):
     parser.add_argument("--update", action="store_true",
                         help="rewrite the golden transcripts and the features' values "
                         "(tolerances and comments kept) and print what changed")
-    parser.set_defaults(run=lambda args: regression.main(args.names, args.update))
+    parser.set_defaults(run=run)
+
+
+def run(args):
+    """Every scenario boots a copy of build/robot.dsk: check it once, before any."""
+    check_start_image(PRISTINE)
+    return regression.main(args.names, args.update)
