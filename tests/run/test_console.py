@@ -201,12 +201,7 @@ def test_bye_after_the_disk_was_detached_says_so_and_names_the_lost_block(tmp_pa
     shutil.copyfile(PRISTINE, disk)
     child = console(disk)
     write_block_word(child, "no disk to write to")
-    child.send("\x05")
-    child.expect("sim> ")
-    child.send("detach rl0\r")
-    child.expect("sim> ")
-    child.send("cont\r")
-    assert probe_prompt(child) == 0
+    simh_command(child, "detach rl0")
     child.send("BYE\r")
     child.expect(r"RL0 block 100 write not ready: .*not-ready")
     child.expect(r"FLUSH failed \(Error: block write error: FLUSH\)\.\r+\n")
