@@ -262,9 +262,10 @@ class Listing:
         return rows
 
 
-def make_listing(first=1000, last=1012, image=PRISTINE, kernel=KERNEL, kernel_map=KERNEL_MAP):
-    """`1000 LOAD` (the blocks chain with -->), the chains of any later blocks in
-    the range, and list blocks first..last."""
+def make_listing(first=1000, last=1012, image=PRISTINE, kernel=KERNEL, kernel_map=KERNEL_MAP,
+                 first_load=()):
+    """`1000 LOAD` (the blocks chain with -->), the blocks of `first_load`, the
+    chains of any later blocks in the range, and list blocks first..last."""
     for what, path in (("disk image", image), ("kernel", kernel), ("kernel map", kernel_map)):
         if not Path(path).is_file():
             raise ListingError(f"the {what} {path} does not exist (run make)")
@@ -278,11 +279,14 @@ def make_listing(first=1000, last=1012, image=PRISTINE, kernel=KERNEL, kernel_ma
     def block_text(n):
         return image_bytes[n * BLOCK_BYTES:(n + 1) * BLOCK_BYTES].decode("latin-1")
 
-    command = " ".join(f"{n} LOAD" for n in [1000] + chain_starts(first, last, block_text))
+    loads = [1000] + [n for n in first_load if n != 1000]
+    loads += [n for n in chain_starts(first, last, block_text) if n not in loads]
+    command = " ".join(f"{n} LOAD" for n in loads)
     first_run = _run(sym, image, kernel, f"ex {sym['DP'] + BODY:o}\n", command)
     if "Error:" in first_run:
-        message = re.search(r"Error: [^\r\n]*(\r?\n[^\r\n]*)?", first_run).group(0)
-        raise ListingError(f"{command} failed: {message.strip()}")
+        message = re.search(r"Error: [^\r\n]*", first_run).group(0)
+        raise ListingError(f"{command} failed: {message.strip()} (blocks it needs "
+                           "first: --load N)")
     events = parse_events(first_run, sym["PARSE-NAME"], _watched(sym))
     if not events:
         raise ListingError("no events: the breakpoint on PARSE-NAME never fired")

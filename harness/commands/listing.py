@@ -55,13 +55,16 @@ def configure(parser):
     parser.formatter_class = argparse.RawDescriptionHelpFormatter
     parser.add_argument("--blocks", default=(1000, 1012), type=block_range, metavar="N[-M]",
                         help="which blocks to list (default 1000-1012; also 1020, 1030-1031)")
+    parser.add_argument("--load", type=int, action="append", default=[], metavar="N",
+                        help="a block to LOAD after 1000 and before the listed ones "
+                        "(repeatable), e.g. --load 1040 for 1060's demonstrations")
     parser.add_argument("--out", metavar="FILE", help="write the listing here (default: stdout)")
     parser.set_defaults(run=run)
 
 
 def run(args):
     first, last = args.blocks
-    text = make_listing(first, last).format() + "\n"
+    text = make_listing(first, last, first_load=args.load).format() + "\n"
     if not args.out:
         sys.stdout.write(text)
         return 0

@@ -95,3 +95,15 @@ def test_cli_writes_one_block(tmp_path):
     text = out.read_text()
     assert text.startswith("Block 1009\n") and "header of Read.Counter" in text
     assert "Block 1010" not in text
+
+
+def test_blocks_that_need_others_first_say_so_and_take_load(tmp_path):
+    out = tmp_path / "l.lst"
+    r = subprocess.run([sys.executable, "-m", "harness", "listing", "--blocks", "1060",
+                        "--out", str(out)], cwd=ROOT, capture_output=True, text=True)
+    assert r.returncode == 1 and "undefined word: Via" in r.stderr and "--load N" in r.stderr
+    r = subprocess.run([sys.executable, "-m", "harness", "listing", "--blocks", "1060",
+                        "--load", "1040", "--out", str(out)], cwd=ROOT, capture_output=True,
+                       text=True)
+    assert r.returncode == 0, r.stderr
+    assert out.read_text().startswith("Block 1060\n")
