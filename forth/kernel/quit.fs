@@ -10,14 +10,15 @@ VARIABLE 'ON-ERROR  ( -- a ) \ xt run after every error (0 = none)
 \ when the structure closes it runs with HERE above it (PAD, the pictured
 \ number buffer and WORD's buffer must not overwrite it), then HERE is put back.
 VARIABLE TEMP-DEPTH  ( -- a ) \ depth+1 when it started, 0 = none
-VARIABLE TEMP-START  ( -- a )
+VARIABLE TEMP-START  ( -- a ) \ where its code starts (HERE aligned)
+VARIABLE TEMP-HERE  ( -- a ) \ HERE before it, put back afterwards
 VARIABLE TEMP-END  ( -- a ) \ HERE above the code while it runs, 0 = none runs
 : OPENER?  ( xt -- xt f )
   DUP ['] IF = OVER ['] BEGIN = OR OVER ['] DO = OR OVER ['] ?DO = OR ;
 : TEMP-BEGIN  ( xt -- xt )  \ xt is still on the stack: DEPTH counts it (the +1)
-  HERE TEMP-START !  'DOCOL JSR-IP CF,  DEPTH TEMP-DEPTH !  ] ;
+  HERE TEMP-HERE !  ALIGN HERE TEMP-START !  'DOCOL JSR-IP CF,  DEPTH TEMP-DEPTH !  ] ;
 : TEMP-FORGET  ( -- )  \ unless what it ran allotted or defined something
-  TEMP-END @ IF TEMP-END @ HERE = IF TEMP-START @ DP ! THEN 0 TEMP-END ! THEN ;
+  TEMP-END @ IF TEMP-END @ HERE = IF TEMP-HERE @ DP ! THEN 0 TEMP-END ! THEN ;
 : TEMP-END?  ( -- )  \ structure closed (by a word compiling): run it, forget it
   TEMP-DEPTH @ STATE @ AND IF DEPTH 1+ TEMP-DEPTH @ = IF
     ['] EXIT ,  POSTPONE [  0 TEMP-DEPTH !  HERE TEMP-END !  TEMP-START @ EXECUTE
@@ -29,13 +30,13 @@ VARIABLE TEMP-END  ( -- a ) \ HERE above the code while it runs, 0 = none runs
       NIP NIP DUP NAME> SWAP C@
       STATE @ IF 128 AND IF EXECUTE ELSE COMPILE, THEN
       ELSE 64 AND IF OPENER? 0= IF -14 THROW THEN TEMP-BEGIN THEN EXECUTE THEN
-    ELSE NUMBER? IF STATE @ IF POSTPONE LITERAL THEN ELSE -13 THROW THEN THEN
+    ELSE NUMBER THEN
     ?STACK TEMP-END?
   REPEAT 2DROP ;
-: EVALUATE  ( a u -- )
-  SRC 2@ 2>R  >IN @ >R  BLK @ >R  SOURCE-ID @ >R
-  SRC 2!  0 >IN !  0 BLK !  -1 SOURCE-ID !  INTERPRET
-  R> SOURCE-ID !  R> BLK !  R> >IN !  2R> SRC 2! ;
+: EVALUATE  ( a u -- )  \ CORE, BLOCK
+  SRC 2@ 2>R  >IN @ >R  BLK @ >R  SRC-ID @ >R
+  SRC 2!  0 >IN !  0 BLK !  -1 SRC-ID !  INTERPRET
+  R> SRC-ID !  R> BLK !  R> >IN !  2R> SRC 2! ;
 
 \ ---- reverse lookup: which word holds an address -----------------------------------
 VARIABLE BEST  ( -- a )
@@ -92,6 +93,7 @@ VARIABLE TRAP-WORD  ( -- a ) \ the word holding its PC, 0 = none
   DUP -16 = IF DROP ." name expected" EXIT THEN
   DUP -17 = IF DROP ." pictured numeric output too long" EXIT THEN
   DUP -19 = IF DROP ." name longer than 31 characters" EXIT THEN
+  DUP -21 = IF DROP ." unsupported operation (a DEFER without an action?)" EXIT THEN
   DUP -22 = IF DROP ." unbalanced control structure" EXIT THEN
   DUP -24 = IF DROP ." BASE outside 2..36 (now DECIMAL)" EXIT THEN
   DUP -23 = IF DROP ." odd address for a word access" EXIT THEN
@@ -99,27 +101,46 @@ VARIABLE TRAP-WORD  ( -- a ) \ the word holding its PC, 0 = none
   DUP -33 = IF DROP ." block read error" EXIT THEN
   DUP -34 = IF DROP ." block write error" EXIT THEN
   DUP -35 = IF DROP ." no such block" EXIT THEN
+  DUP -49 = IF DROP ." search-order overflow" EXIT THEN
+  DUP -50 = IF DROP ." search-order underflow" EXIT THEN
   DUP -256 = TRAP-SEEN @ 0< 0= AND IF DROP .TRAP EXIT THEN
   ." error " 0 .R ;
-: .ERROR  ( code -- )  \ Error: what: word [in block b line l]
-  CR ." Error: " .ERROR-TEXT  WHAT 2@ ?DUP IF ." : " TYPE ELSE DROP THEN
-  BLK @ IF ."  in block " BLK @ . ." line " >IN @ 1- 0 MAX 64 / . THEN CR ;
+\ An undefined word that a vocabulary outside the search order holds (after an
+\ error the context is CURRENT again, so the editor's P is gone until EDITOR is
+\ typed): say which vocabulary to type.
+: IN-ORDER?  ( wid -- f )  \ is wid in the search order?
+  FALSE #ORDER @ 2* CONTEXT + CONTEXT ?DO OVER I @ = OR 2 +LOOP NIP ;
+: .ELSEWHERE  ( -- )
+  VOC-LINK @ BEGIN ?DUP WHILE
+    DUP 8 -  DUP VOC-NAME OVER IN-ORDER? 0= AND IF
+      WHAT 2@ 2 PICK WID-FIND IF
+        ."  (a word of " DUP VOC-NAME .NAME ." : type " VOC-NAME .NAME
+        ."  to select it again)" DROP EXIT
+      THEN
+    THEN DROP @
+  REPEAT ;
+: .ERROR  ( code -- )  \ Error: what: word [in block b line l] [(where it is)]
+  CR ." Error: " DUP .ERROR-TEXT  WHAT 2@ ?DUP IF ." : " TYPE ELSE DROP THEN
+  ERR-BLK @ IF ."  in block " ERR-BLK @ . ." line " ERR-IN @ 1- 0 MAX 64 / . THEN
+  -13 = IF .ELSEWHERE THEN CR ;
 : UNLINK  ( lfa -- )  \ the newest header of CURRENT leaves, HERE goes back to it
   DUP @ OVER 2+ C@ CURRENT @ SWAP CHAIN !  DP !  CURRENT @ NEWEST 2+ LAST ! ;
 : DISCARD-DEFINITION  ( -- )  \ a definition cut short leaves nothing behind
   STATE @ IF COLON-LFA @ ?DUP IF UNLINK THEN THEN
-  0 COLON-LFA !  NO-LOOPS  TEMP-DEPTH @ IF TEMP-START @ DP !  0 TEMP-DEPTH ! THEN  TEMP-FORGET ;
+  0 COLON-LFA !  NO-LOOPS  TEMP-DEPTH @ IF TEMP-HERE @ DP !  0 TEMP-DEPTH ! THEN  TEMP-FORGET ;
 : CLEAR-STACK  ( -- )  \ empty, and the slack below S0 zeroed: a word run on an
   S0 SP!  S0 16 ERASE ;  \ empty stack finds 0 (no address, no count) there
+: CONTEXT-AFTER-ERROR  ( -- )  \ FORTH-79: CONTEXT := CURRENT; an empty order: the boot one
+  #ORDER @ 0= IF ONLY ALSO THEN  CURRENT @ CONTEXT ! ;
 : RESET-AFTER-ERROR  ( -- )
-  DISCARD-DEFINITION  POSTPONE [  0 BLK !  0 SOURCE-ID !  CURRENT @ CONTEXT !
+  DISCARD-DEFINITION  POSTPONE [  0 BLK !  0 SRC-ID !  CONTEXT-AFTER-ERROR
   'ON-ERROR @ ?DUP IF EXECUTE THEN  0 PRIORITY! ;
 
 \ ---- QUIT --------------------------------------------------------------------------
 : .LOST  ( -- )  \ say so when the console ring overflowed
   RXLOST @ ?DUP IF CR U. ." characters lost: typed too far ahead" CR  0 RXLOST ! THEN ;
-: QUERY  ( -- )  \ a line from the terminal becomes the source
-  0 0 WHAT 2!  TIB TIB-SIZE 1- ACCEPT  TIB SWAP SRC 2!  0 >IN !  0 BLK !  0 SOURCE-ID !  SPACE .LOST ;
+: QUERY  ( -- )  \ CORE EXT: a line from the terminal becomes the source
+  0 0 WHAT 2!  TIB TIB-SIZE 1- ACCEPT  TIB SWAP SRC 2!  0 >IN !  0 BLK !  0 SRC-ID !  SPACE .LOST ;
 : INTERPRET-LINE  ( -- )  QUERY INTERPRET ;
 : .PROMPT  ( -- )  \ gforth's: an open definition or structure says so
   STATE @ TEMP-DEPTH @ OR IF ."  compiled" ELSE ."  ok" THEN CR ;
@@ -131,6 +152,6 @@ CREATE RS-GUARD  ( -- a )  ' RS-EMPTY ,
 : ABORT-TO-QUIT  ( code -- )  \ THROW with no CATCH frame, return stack emptied:
   >R CLEAR-STACK  BASE @ 2 37 WITHIN 0= IF DECIMAL THEN  \ a sane stack and BASE
   R> .ERROR  RESET-AFTER-ERROR  QUIT ;                   \ for the report
-: QUIT  ( -- )  \ read, interpret: forever. An error is a THROW with no CATCH
-  RS-GUARD RP0 !  RP0 RP!  0 HANDLER !  POSTPONE [  0 BLK !  0 PRIORITY!   \ frame: it reports,
-  BEGIN INTERPRET-LINE .PROMPT AGAIN ;                     \ resets, QUITs again
+: QUIT  ( -- )  \ CORE: read, interpret: forever. An error is a THROW with no CATCH
+  RS-GUARD RP0 !  RP0 RP!  0 HANDLER !  POSTPONE [  0 BLK !  0 PRIORITY!  \ frame:
+  BEGIN INTERPRET-LINE .PROMPT AGAIN ;         \ it reports, resets, QUITs again

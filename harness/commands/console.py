@@ -3,11 +3,11 @@ import argparse
 import shutil
 from pathlib import Path
 
-from harness.console_session import HINT, session
+from harness.commands.argtypes import positive
+from harness.console_session import BUSY_WAIT, HINT, RACK_HINT, session
+from harness.disk import DiskError, check_image
 from harness.simh import PDP11
 
-NAME = "console"
-HELP = "the interactive FORTH console on the robot's PDP-11/23 (what make run starts)"
 ROOT = Path(__file__).resolve().parents[2]
 WORK_DISK = ROOT / "local" / "robot.dsk"
 PRISTINE = ROOT / "build" / "robot.dsk"
@@ -17,15 +17,17 @@ class ConsoleError(RuntimeError):
     """The console cannot start."""
 
 
-ERRORS = (ConsoleError,)
+ERRORS = (ConsoleError, DiskError)
 
 DESCRIPTION = f"""\
 Boot the FORTH on the robot's PDP-11/23 and join your terminal to its console,
-ready for `1000 LOAD`. The machine runs at the 11/23's pace (SIMH SET THROTTLE
-300K: SIMH measures the host for a few million instructions first, then
-paces) unless --fast.
+ready for `1000 LOAD`. The machine runs at the 11/23's pace (SET CLK
+REALTIME) unless --fast: then at full speed while the FORTH works, and at the
+11/23's pace while it waits for a key (SET CPU IDLE), which costs the host little.
 
 {HINT}
+
+{RACK_HINT}
 
 The disk is the working copy local/robot.dsk (created from build/robot.dsk when
 missing; make never overwrites it), or --disk IMAGE."""
@@ -40,15 +42,18 @@ def configure(parser):
                         help="full speed instead of the 11/23's real-time pace")
     parser.add_argument("--trace", metavar="FILE", help="record the plant trace (CSV)")
     parser.add_argument("--simulator", default=str(PDP11), help=argparse.SUPPRESS)
+    # wall seconds a running word gets at BYE before ^C stops it (tests shorten it)
+    parser.add_argument("--busy-wait", type=positive, default=BUSY_WAIT,
+                        help=argparse.SUPPRESS)
     parser.set_defaults(run=run)
 
 
 def working_disk(requested):
-    """The image to attach; the default working copy is made when missing."""
+    """The image to attach, checked (harness.disk.check_image: the console changes
+    it, so it must be writable); the default working copy is made when missing."""
     if requested:
         disk = Path(requested)
-        if not disk.is_file():
-            raise ConsoleError(f"{disk}: no such disk image")
+        check_image(disk)
         return disk
     if not WORK_DISK.is_file():
         if not PRISTINE.is_file():
@@ -58,6 +63,7 @@ def working_disk(requested):
         shutil.copyfile(PRISTINE, tmp)
         tmp.replace(WORK_DISK)
         print(f"[console] working disk {WORK_DISK} created from {PRISTINE}")
+    check_image(WORK_DISK)
     return WORK_DISK
 
 
@@ -67,4 +73,5 @@ def run(args):
         raise ConsoleError(f"{args.simulator}: no simulator (run make)")
     if args.trace and not Path(args.trace).resolve().parent.is_dir():
         raise ConsoleError(f"{args.trace}: its directory does not exist")
-    return session(args.simulator, disk, trace=args.trace, fast=args.fast)
+    return session(args.simulator, disk, trace=args.trace, fast=args.fast,
+                   busy_wait=args.busy_wait)

@@ -7,14 +7,12 @@ from pathlib import Path
 
 from harness import script
 from harness.commands.argtypes import positive
-from harness.disk import write_atomic
+from harness.disk import DiskError, check_image, write_atomic
 from harness.script_run import run_steps
 from harness.scripted_machine import KERNEL, ScriptError, ScriptedMachine
 from harness.simh import PDP11, SimhError
 
-NAME = "run"
-HELP = "run a console script on a fresh copy of the disk: transcript and plant trace"
-ERRORS = (script.ScriptSyntaxError, ScriptError, SimhError)
+ERRORS = (script.ScriptSyntaxError, ScriptError, SimhError, DiskError)
 PRISTINE = Path(__file__).resolve().parents[2] / "build" / "robot.dsk"
 
 DESCRIPTION = """\
@@ -32,7 +30,8 @@ transcript). The run is deterministic: the same script gives the same bytes.
 
 Exit status 0 if every line was answered " ok"; 1 if a line failed (named as
 SCRIPT:LINE: the error), the script is bad, or the machine could not be run;
-2 for a bad option. Outputs are written whole (temporary file, then renamed);
+2 for a bad option. Outputs are written whole (temporary file, then renamed)
+into directories that must exist (--out is not created, as plot's is not);
 a run that fails still writes them, one that cannot start writes nothing."""
 
 
@@ -73,25 +72,36 @@ def output_paths(args):
 def _check_writable(path):
     parent = path.parent
     if not parent.is_dir():
-        raise ScriptError(f"{parent}: no such directory for {path.name}")
+        raise ScriptError(f"{parent}: no such directory for {path.name} (output "
+                          "directories must exist, as for plot)")
+    if path.is_dir():
+        raise ScriptError(f"{path}: is a directory, not a file to write")
+
+
+def check_start_image(disk):
+    """The image a run starts from is only read (each run boots a copy): it must be
+    there, readable and RL02-sized (harness.disk.check_image); DiskError if not."""
+    if disk == PRISTINE and not disk.exists():
+        raise DiskError(f"{disk}: no such disk image (run make)")
+    check_image(disk, writable=False)
 
 
 def run(args):
     steps = script.read(args.script)
     transcript_path, trace_path = output_paths(args)
-    if args.out:
-        Path(args.out).mkdir(parents=True, exist_ok=True)
+    if args.out and Path(args.out).exists() and not Path(args.out).is_dir():
+        raise ScriptError(f"--out {args.out}: not a directory (--out names the directory "
+                          "for both outputs; --transcript and --trace name files)")
     for path in (transcript_path, trace_path):
         _check_writable(path)
     disk = Path(args.disk)
-    if not disk.is_file():
-        raise ScriptError(f"{disk}: no such disk image" +
-                          (" (run make)" if disk == PRISTINE else ""))
+    check_start_image(disk)
     with tempfile.TemporaryDirectory(prefix="harness-run-") as tmp:
         try:
             shutil.copyfile(disk, Path(tmp) / "robot.dsk")
         except OSError as e:
             raise ScriptError(f"{disk}: cannot copy the disk image: {e.strerror}") from e
+        check_image(Path(tmp) / "robot.dsk")         # the copy the machine changes
         with ScriptedMachine("robot.dsk", trace="trace.csv", cwd=tmp,
                              simulator=args.simulator, line_limit=args.line_limit,
                              kernel=Path(args.kernel),

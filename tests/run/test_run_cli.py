@@ -5,6 +5,8 @@ import sys
 
 import pytest
 
+from harness.script import MAX_LINE
+from harness.scripted_machine import read_kernel_map
 from tests.run.common import PRISTINE, ROOT, needs_build
 
 pytestmark = needs_build
@@ -29,6 +31,7 @@ def test_two_runs_give_identical_files_and_leave_the_disk_alone(tmp_path):
     before = hashlib.sha256(PRISTINE.read_bytes()).hexdigest()
     outputs = []
     for out in ("a", "b"):
+        (tmp_path / out).mkdir()
         r = harness("run", script, "--out", tmp_path / out)
         assert r.returncode == 0, r.stderr
         outputs.append([(tmp_path / out / name).read_bytes()
@@ -38,7 +41,7 @@ def test_two_runs_give_identical_files_and_leave_the_disk_alone(tmp_path):
     assert "1 2 + . 3  ok\n" in transcript and "9 SQ . 81  ok\n" in transcript
     assert "sim> show plant\nPLANT, seed=1983" in transcript
     assert str(tmp_path) not in transcript and "\r" not in transcript
-    assert outputs[0][1].startswith(b"time_s,axis,dac,vcmd,vel,pos,counter\n")
+    assert outputs[0][1].startswith(b"time_s,axis,dac,vcmd,vel,pos,counter,grip,contact,missed\n")
     assert hashlib.sha256(PRISTINE.read_bytes()).hexdigest() == before
 
 
@@ -59,6 +62,70 @@ def test_a_line_that_never_finishes_is_stopped_in_simulated_time(tmp_path):
     assert f"{script}:2: the simulator stopped: no prompt within 0.5 simulated seconds" in r.stderr
 
 
+def test_bye_ends_the_session(tmp_path):
+    """The FORTH's BYE (FLUSH, then its HALT) ends a scripted run as it ends the
+    console: a clean end when it is the last line, a failure naming what was left."""
+    script = tmp_path / "s.script"
+    script.write_text("1 .\n: DONE 2 . BYE ; DONE\n")
+    r = harness("run", script)
+    assert r.returncode == 0, r.stderr
+    assert (tmp_path / "s.transcript").read_text().endswith(": DONE 2 . BYE ; DONE 2 ")
+    script.write_text("1 .\nBYE\n3 .\n")
+    r = harness("run", script)
+    assert r.returncode == 1
+    assert f"{script}:2: BYE ended the session; 1 later steps not run" in r.stderr
+
+
+RUNAWAY = ': LOOPY ( -- ) CR ." Error: made up" CR BEGIN AGAIN ;\nLOOPY\n2 3 + .\n'
+LIMIT_HIT = ("{script}:2: the simulator stopped: no prompt within 0.5 simulated seconds "
+             "(the line is still running); it had printed Error: made up")
+
+
+def test_a_line_that_prints_an_error_and_runs_on_has_hit_the_line_limit(tmp_path):
+    script = tmp_path / "runaway.script"
+    script.write_text(RUNAWAY)
+    r = harness("run", script, "--line-limit", "0.5")
+    assert r.returncode == 1
+    assert r.stderr.startswith(LIMIT_HIT.format(script=script) + " (in: LOOPY)\n"), r.stderr
+    assert "2 3 + ." not in (tmp_path / "runaway.transcript").read_text()
+
+
+def test_keep_going_stops_a_runaway_line_with_ctrl_c_and_goes_on(tmp_path):
+    script = tmp_path / "runaway.script"
+    script.write_text(RUNAWAY)
+    r = harness("run", script, "--line-limit", "0.5", "--keep-going")
+    assert r.returncode == 1
+    assert r.stderr.startswith(LIMIT_HIT.format(script=script)
+                               + "; ^C typed, the run goes on (in: LOOPY)\n"), r.stderr
+    assert "3 of 3 steps run" in r.stdout
+    assert (tmp_path / "runaway.transcript").read_text().endswith(
+        "Error: interrupted by ^C: LOOPY\n2 3 + . 5  ok\n")
+
+
+def test_keep_going_ends_when_not_even_ctrl_c_brings_the_prompt_back(tmp_path):
+    """At processor priority 7 the DL11's receive interrupt (^C) is masked."""
+    script = tmp_path / "deaf.script"
+    script.write_text("7 PRIORITY! BEGIN AGAIN\n1 .\n")
+    r = harness("run", script, "--line-limit", "0.5", "--keep-going")
+    assert r.returncode == 1
+    assert "^C typed, and still no prompt within 0.5 simulated seconds" in r.stderr
+    assert "1 of 2 steps run" in r.stdout
+
+
+def test_the_longest_script_line_is_what_the_kernels_accept_takes(tmp_path):
+    """script.MAX_LINE, the docs' 255 and the kernel's TIB-SIZE - 1 agree, and a
+    line that long is typed and answered whole."""
+    assert MAX_LINE == read_kernel_map()["TIB-SIZE"] - 1 == 255
+    assert "at most 255 characters" in (ROOT / "docs" / "console.md").read_text()
+    line = "( " + "x" * (MAX_LINE - len("(  ) 7 .")) + " ) 7 ."
+    assert len(line) == 255
+    script = tmp_path / "long.script"
+    script.write_text(line + "\n")
+    r = harness("run", script)
+    assert r.returncode == 0, r.stderr
+    assert (tmp_path / "long.transcript").read_text().endswith(" 7  ok\n")
+
+
 def test_a_simh_command_that_simh_refuses_fails_its_line(tmp_path):
     script = tmp_path / "s.script"
     script.write_text("1 .\n#simh show nosuchdevice\n2 .\n")
@@ -75,6 +142,8 @@ def test_a_simh_command_that_simh_refuses_fails_its_line(tmp_path):
     (["run", "BAD.script"], "BAD.script:2: unknown directive #wiat"),
     (["run", "OK.script", "--disk", "NONE.dsk"], "NONE.dsk: no such disk image"),
     (["run", "OK.script", "--transcript", "NODIR/t"], "NODIR: no such directory"),
+    (["run", "OK.script", "--out", "NODIR"], "NODIR: no such directory for OK.transcript"),
+    (["run", "OK.script", "--out", "BAD.script"], "BAD.script: not a directory"),
     (["run", "OK.script", "--kernel", "NONE.lda"], "NONE.lda does not exist"),
     (["run", "OK.script", "--kernel", "BAD.script"], "BAD.map: No such file"),
 ])
@@ -91,3 +160,16 @@ def test_bad_input_is_a_clear_error_and_writes_nothing(tmp_path, args, message):
 def test_a_bad_option_is_a_usage_error(tmp_path):
     r = harness("run", tmp_path / "x.script", "--line-limit", "-3")
     assert r.returncode == 2 and "expected a positive number" in r.stderr
+
+
+def test_an_unknown_option_prints_the_subcommands_usage(tmp_path):
+    r = harness("run", tmp_path / "x.script", "--bogus")
+    assert r.returncode == 2
+    assert r.stderr.startswith("usage: python -m harness run ")
+    assert "unrecognized arguments: --bogus" in r.stderr
+
+
+def test_regress_help_states_the_exit_codes():
+    r = harness("regress", "--help")
+    assert r.returncode == 0
+    assert "Exit status: 0 when every scenario" in " ".join(r.stdout.split())
