@@ -77,34 +77,39 @@ VARIABLE TRAP-WORD  ( -- a ) \ the word holding its PC, 0 = none
     ." unexpected interrupt" THEN THEN THEN THEN THEN THEN THEN
   ."  (vector " .OCTAL ." , PC " TRAP-PC @ .OCTAL
   TRAP-WORD @ ?DUP IF ."  in " .NAME THEN  .DISARMED ." )" ;
+\ The messages of the error codes: code, counted string, aligned; 0 ends it.
+CREATE ERROR-TEXTS  ( -- a )
+  -1 , ," aborted"
+  -3 , ," stack overflow"
+  -4 , ," stack underflow"
+  -5 , ," return stack overflow"
+  -6 , ," return stack underflow"
+  -8 , ," dictionary full"
+  -9 , ," invalid memory address"
+  -10 , ," division by zero"
+  -13 , ," undefined word"
+  -14 , ," compile-only word interpreted"
+  -15 , ," cannot forget kernel words"
+  -16 , ," name expected"
+  -17 , ," pictured numeric output too long"
+  -19 , ," name longer than 31 characters"
+  -21 , ," unsupported operation (a DEFER without an action?)"
+  -22 , ," unbalanced control structure"
+  -24 , ," BASE outside 2..36 (now DECIMAL)"
+  -23 , ," odd address for a word access"
+  -28 , ," interrupted by ^C"
+  -33 , ," block read error"
+  -34 , ," block write error"
+  -35 , ," no such block"
+  -49 , ," search-order overflow"
+  -50 , ," search-order underflow"
+  0 ,
 : .ERROR-TEXT  ( code -- )
-  DUP -1 = IF DROP ." aborted" EXIT THEN
   DUP -2 = IF DROP ABORT-MSG @ COUNT TYPE EXIT THEN
-  DUP -3 = IF DROP ." stack overflow" EXIT THEN
-  DUP -4 = IF DROP ." stack underflow" EXIT THEN
-  DUP -5 = IF DROP ." return stack overflow" EXIT THEN
-  DUP -6 = IF DROP ." return stack underflow" EXIT THEN
-  DUP -8 = IF DROP ." dictionary full" EXIT THEN
-  DUP -9 = IF DROP ." invalid memory address" EXIT THEN
-  DUP -10 = IF DROP ." division by zero" EXIT THEN
-  DUP -13 = IF DROP ." undefined word" EXIT THEN
-  DUP -14 = IF DROP ." compile-only word interpreted" EXIT THEN
-  DUP -15 = IF DROP ." cannot forget kernel words" EXIT THEN
-  DUP -16 = IF DROP ." name expected" EXIT THEN
-  DUP -17 = IF DROP ." pictured numeric output too long" EXIT THEN
-  DUP -19 = IF DROP ." name longer than 31 characters" EXIT THEN
-  DUP -21 = IF DROP ." unsupported operation (a DEFER without an action?)" EXIT THEN
-  DUP -22 = IF DROP ." unbalanced control structure" EXIT THEN
-  DUP -24 = IF DROP ." BASE outside 2..36 (now DECIMAL)" EXIT THEN
-  DUP -23 = IF DROP ." odd address for a word access" EXIT THEN
-  DUP -28 = IF DROP ." interrupted by ^C" EXIT THEN
-  DUP -33 = IF DROP ." block read error" EXIT THEN
-  DUP -34 = IF DROP ." block write error" EXIT THEN
-  DUP -35 = IF DROP ." no such block" EXIT THEN
-  DUP -49 = IF DROP ." search-order overflow" EXIT THEN
-  DUP -50 = IF DROP ." search-order underflow" EXIT THEN
   DUP -256 = TRAP-SEEN @ 0< 0= AND IF DROP .TRAP EXIT THEN
-  ." error " 0 .R ;
+  ERROR-TEXTS BEGIN DUP @ WHILE
+    2DUP @ = IF NIP 2+ COUNT TYPE EXIT THEN  2+ COUNT + ALIGNED
+  REPEAT DROP  ." error " 0 .R ;
 \ An undefined word that a vocabulary outside the search order holds (after an
 \ error the context is CURRENT again, so the editor's P is gone until EDITOR is
 \ typed): say which vocabulary to type.

@@ -12,6 +12,8 @@ get-current  meta-wl set-current
 : INCLUDE ( "file" -- )  parse-name meta-include ;
 : , ( x -- ) t, ;
 : C, ( c -- ) tc, ;
+: ," ( "text<quote>" -- )  \ a counted string, then aligned (tables of messages)
+  [char] " parse  dup tc,  0 ?do  dup i + c@ tc,  loop drop  talign ;
 : ALLOT ( n -- ) tallot ;
 : ALIGN ( -- ) talign ;
 : HERE ( -- ta ) there ;
