@@ -151,7 +151,8 @@ VARIABLE SBUF  ( -- a ) \ offset of the buffer used last
 : POSTPONE  ( "name" -- )  \ CORE
   PARSE-NAME ?NAME  DUP NAME> SWAP C@ 128 AND IF , ELSE POSTPONE LITERAL ['] COMPILE, , THEN ;
   IMMEDIATE COMPILE-ONLY
-: RECURSE  ( -- )  LAST-XT @ , ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: RECURSE  ( -- )  \ CORE: 0 = the last definition was forgotten or cut short
+  LAST-XT @ ?DUP 0= IF -14 THROW THEN , ;  IMMEDIATE COMPILE-ONLY
 
 \ ---- headers and defining words ------------------------------------------------------
 VARIABLE COLON-LFA  ( -- a ) \ header of the definition being compiled

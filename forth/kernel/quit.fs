@@ -128,11 +128,12 @@ CREATE ERROR-TEXTS  ( -- a )
   CR ." Error: " DUP .ERROR-TEXT  WHAT 2@ ?DUP IF ." : " TYPE ELSE DROP THEN
   ERR-BLK @ IF ."  in block " ERR-BLK @ . ." line " ERR-IN @ 1- 0 MAX 64 / . THEN
   -13 = IF .ELSEWHERE THEN CR ;
-: UNLINK  ( lfa -- )  \ the newest header of CURRENT leaves, HERE goes back to it
-  DUP @ OVER 2+ C@ CURRENT @ SWAP CHAIN !  DP !  CURRENT @ NEWEST 2+ LAST ! ;
+: UNLINK  ( lfa -- )  \ a definition cut short leaves, HERE goes back to it, and
+  (FORGET) ;  \ so does what was defined after it ([ CREATE X ] inside it): no chain
+              \ may keep a header above HERE, where the next one would overwrite it
 : DISCARD-DEFINITION  ( -- )  \ a definition cut short leaves nothing behind
   STATE @ IF COLON-LFA @ ?DUP IF UNLINK THEN THEN
-  0 COLON-LFA !  NO-LOOPS  TEMP-DEPTH @ IF TEMP-HERE @ DP !  0 TEMP-DEPTH ! THEN  TEMP-FORGET ;
+  0 COLON-LFA !  NO-LOOPS  TEMP-DEPTH @ IF TEMP-HERE @ UNLINK  0 TEMP-DEPTH ! THEN  TEMP-FORGET ;
 : CLEAR-STACK  ( -- )  \ empty, and the slack below S0 zeroed: a word run on an
   S0 SP!  S0 16 ERASE ;  \ empty stack finds 0 (no address, no count) there
 : CONTEXT-AFTER-ERROR  ( -- )  \ FORTH-79: CONTEXT := CURRENT; an empty order: the boot one

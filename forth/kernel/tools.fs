@@ -61,6 +61,7 @@ CREATE CURSORS 8 ALLOT  ( -- a ) \ WORDS' place in each chain
 : (FORGET)  ( lfa -- )  \ remove every word from lfa up
   DUP FENCE @ U< IF -15 THROW THEN
   DUP RESTORE-VECTORS  DUP TRIM-VOCS
+  LAST-XT @ OVER U< 0= IF 0 LAST-XT ! THEN  \ RECURSE must not call forgotten code
   #ORDER @ 2* CONTEXT + CONTEXT ?DO  \ forgotten word lists leave the search order
     I @ OVER U< 0= IF FORTH-BODY I ! THEN  2 +LOOP
   CURRENT @ OVER U< 0= IF FORTH-BODY CURRENT ! THEN

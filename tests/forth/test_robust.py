@@ -121,3 +121,21 @@ def test_control_c_at_idle_prompt_blames_no_word(forth):
     forth.child.expect(ERROR)
     assert forth.child.match.group(1) == "interrupted by ^C"
     still_works(forth)
+
+
+def test_words_created_inside_a_definition_cut_short_leave_with_it(forth):
+    """[ CREATE X ] inside a definition or a typed structure that then fails: X
+    leaves too, so no chain keeps a header above HERE for the next one to
+    overwrite (a header of the same chain as U. once cut U. off)."""
+    for line in (": CUT1 [ CREATE INNER1 ] NOSUCH", "1 IF [ CREATE INNER2 ] NOSUCH"):
+        assert forth.reply(line).error == "undefined word: NOSUCH"
+    for gone in ("INNER1", "INNER2", "CUT1"):
+        assert forth.reply(gone).error == f"undefined word: {gone}"
+    assert forth.send(": CUT2 ; : LONGER-NAME-4 U. ; 5 LONGER-NAME-4") == "5 "
+    still_works(forth)
+
+
+def test_recurse_never_calls_a_definition_cut_short(forth):
+    assert forth.reply(": CUT3 1 2 NOSUCH").error == "undefined word: NOSUCH"
+    assert forth.reply("1 IF RECURSE THEN").error == "compile-only word interpreted: RECURSE"
+    still_works(forth)
