@@ -7,8 +7,10 @@ Kinds: undefined words, bad numbers, unbalanced control structures, stack
 abuse, BASE outside 2..36, CATCH/THROW misuse, reversed block ranges and
 blocks off the disk; never a raw memory store (no ! C! FILL MOVE SP! RP! TO,
 no EXECUTE or CATCH of a number: those two come only after a line that empties
-the stack), no kernel word redefined, never a line that would rightly run for
-ever. What ends every loop: DO takes two small literals (n 0 DO), +LOOP a
+the stack), no kernel word redefined (a defining or parsing word always takes a
+name never used before, so compiled into a definition it is an error, not a word
+that parses the caller's next word when it runs), never a line that would
+rightly run for ever. What ends every loop: DO takes two small literals (n 0 DO), +LOOP a
 literal positive step, UNTIL a literal 1 and WHILE a literal 0 just before it,
 REPEAT and AGAIN close only those; UNLOOP comes only as UNLOOP EXIT; a
 definition calls earlier ones only outside its loops. Control-flow tags keep
@@ -41,6 +43,7 @@ class LineMaker:
         self.rng = random.Random(seed)
         self.defined = 0              # F0 .. F<defined-1> have been named
         self.pending = []             # lines that must follow the last one
+        self.names = 0                # N0 N1 ...: each name a defining word takes is new
 
     # ---- pieces ---------------------------------------------------------------------
     def number(self):
@@ -70,7 +73,10 @@ class LineMaker:
         if kind < 0.85:
             return self.undefined()
         if kind < 0.92:
-            return r.choice(WORDS_WITH_NAMES) + " " + r.choice([self.undefined(), "F1"])
+            # a new name: in a definition it is undefined, so a defining or parsing
+            # word is never compiled to parse (and redefine .) when the word runs
+            self.names += 1
+            return f"{r.choice(WORDS_WITH_NAMES)} N{self.names}"
         return r.choice(["HEX", "DECIMAL", "OCTAL", "BASE @ .", "HERE .", "BL", "TRUE", "FALSE"])
 
     def loop_template(self, depth):
