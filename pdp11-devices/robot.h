@@ -26,7 +26,7 @@ void plant_dev_command_done (void);               /* after each SCP command */
 void console_pacing_install (void);
 void console_pacing_rate_changed (void);
 
-extern DEVICE kwl_dev, drv_dev, aav_dev, plant_dev;
+extern DEVICE kwl_dev, drv_dev, aav_dev, plant_dev, lab_dev;
 
 /* Byte writes (SIMH passes the byte in data<7:0>, PA<0> says which half). */
 #define MERGE_BYTE(old, data, pa, access) \

@@ -6,7 +6,8 @@
    another name, and this file defines the sim_devices[] SIMH uses. It is
    filled at start-up from the stock list: SIMH's CLK (clk_dev, the
    wall-calibrated line clock) is replaced, in its place, by the project's
-   KW11-L (kw11l.c, also named CLK); DRV11, AAV11 and PLANT are appended.
+   KW11-L (kw11l.c, also named CLK); DRV11, AAV11, PLANT and LAB (lab.c,
+   the lab bench's pacing, pause and memory watch) are appended.
    Everything else is SIMH's own, in SIMH's order.
 
    What still refers to the stock clock: pdp11_cpumod.c sets clk_fie,
@@ -56,6 +57,7 @@ static void robot_vm_init (void)
     add_device (&n, &drv_dev);
     add_device (&n, &aav_dev);
     add_device (&n, &plant_dev);
+    add_device (&n, &lab_dev);
     sim_devices[n] = NULL;
     plant_dev_init ();
     console_pacing_install ();
