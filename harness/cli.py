@@ -9,9 +9,9 @@ line to COMMANDS.
 import argparse
 import sys
 
-from harness.commands import console, disk, listing, plot, regress, run, timing
+from harness.commands import console, disk, lab, listing, plot, regress, run, timing
 
-COMMANDS = (console, run, regress, disk, plot, timing, listing)
+COMMANDS = (console, lab, run, regress, disk, plot, timing, listing)
 
 
 def build_parser():

@@ -78,9 +78,11 @@ def probe_prompt(child, tries=20):
     return 2
 
 
-def leave(child, trace):
-    """Flush the FORTH's blocks, detach, quit. Returns True if FLUSH was answered."""
-    child.logfile_read = sys.stdout.buffer       # the user sees what happens
+def leave(child, detach=(), echo=None):
+    """Flush the FORTH's blocks, detach the devices named in `detach` and then the
+    disk, quit. What the machine prints goes to `echo` (a binary file; default
+    stdout). Returns True if FLUSH was answered."""
+    child.logfile_read = echo or sys.stdout.buffer   # the user sees what happens
     child.send(CTRL_U + b"\r")                   # an empty line: who answers?
     i = child.expect([b" ok\r\n", b"sim> ", pexpect.TIMEOUT, pexpect.EOF], timeout=15)
     if i == 1:                                   # SIMH had the machine stopped
@@ -98,8 +100,8 @@ def leave(child, trace):
         say("the FORTH did not answer FLUSH: blocks UPDATEd since the last FLUSH may be lost")
     child.send(CTRL_E)
     child.expect(b"sim> ", timeout=15)
-    if trace:
-        child.send(b"detach plant\r")
+    for device in detach:
+        child.send(f"detach {device}\r".encode())
         child.expect(b"sim> ", timeout=15)
     child.send(b"detach rl0\r")
     child.expect(b"sim> ", timeout=15)
@@ -125,7 +127,7 @@ def session(simulator, disk, trace=None, fast=False):
         try:
             child.interact(escape_character=None, input_filter=watcher.feed)
         except Leave:
-            flushed = leave(child, trace)
+            flushed = leave(child, ("plant",) if trace else ())
             say(("blocks flushed; " if flushed else "") + f"disk {disk} detached. Bye.")
             return 0 if flushed else 1
         finally:
