@@ -33,7 +33,7 @@ class PlantRows:
     def parse(self, line):
         """The row as a list, or None for the header and anything unreadable."""
         fields = line.decode("ascii", "replace").split(",")
-        if fields[0] == "time_s":
+        if "time_s" in fields:                     # the header, wherever its columns are
             names = {name: i for i, name in enumerate(fields)}
             self.index = [names.get(c) for c in PLANT_COLUMNS]
             if None in self.index:
