@@ -193,5 +193,7 @@ async def serve(simulator, disk, symbols, port, speed, announce):
     finally:
         for task in tasks:
             task.cancel()
+        for ws in list(lab.pages):                # else cleanup waits for the pages to go
+            await ws.close()
         await runner.cleanup()
     return lab.flushed

@@ -132,10 +132,7 @@ class Simulator:
             return
         try:
             self.watcher.feed(data)
-        except Leave:
-            before = data.split(b"\x04")[0]      # ^D itself is not typed to the FORTH
-            if before:
-                os.write(self.child.child_fd, before)
+        except Leave:                    # as the console: the BYE line is killed with ^U
             asyncio.get_running_loop().create_task(self.close())
             return
         os.write(self.child.child_fd, data)
