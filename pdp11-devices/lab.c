@@ -4,13 +4,17 @@
 
    ATTACH LAB path: rows go to `path` (a FIFO the lab server reads, or a
    file); commands are read, when it exists, from the FIFO `path.ctl`.
-   Attach before the machine starts (the lab's boot script does): its samples
-   then fall on the KW11-L's ticks, once every RATE/60 instructions.
+   Attach before the machine starts (the lab's boot script does): its ticks
+   then fall on the KW11-L's, once every RATE/60 instructions (exactly, when
+   RATE is a multiple of 240, as the default 300000 is).
    DETACH LAB closes both and ends any pause.
 
    Rows, one per line, numbers in decimal:
      W,time_s,tick,w0,w1,...   at every tick: simulated seconds, the tick's
                                number since the attach, the watched words (0..65535)
+     P,time_s,axis,dac,vcmd,vel,pos,counter
+                               the plant, per axis, four times a tick (the
+                               columns of the plant trace, plant_dev.c)
      A,a0,a1,...               the watched addresses (octal), when they change
      S,time_s,state,speed      state run|pause, after every command
      M,addr,w0,...             memory (addr octal, up to 64 words a row): a dump
@@ -23,6 +27,12 @@
      watch a...  octal even addresses below 160000 (at most 64); none = clear
      dump a n    n words from octal address a (at most 28672)
    A bad command is answered by a row "E,what" and changes nothing.
+
+   Reporting: up to ten times the 11/23's pace every tick is reported. Faster
+   than that (full speed) a tick's W and P rows are written only when 1/60 s
+   of wall time has passed since the last reported tick, so the simulator
+   formats and writes about 60 ticks a wall second whatever its speed: the
+   page sees snapshots, and the run loses almost nothing to its observer.
 
    Determinism: the wall clock only decides when the host sleeps; what the
    machine does at each instruction count is the same at any speed and with
@@ -41,6 +51,9 @@
 #include <unistd.h>
 
 #define TICKS_PER_S  60
+#define SUBSAMPLES   4                  /* plant samples per tick */
+#define REPORT_S     (1.0 / 60)         /* wall seconds between ticks reported, when fast */
+#define REPORT_ALL   10.0               /* up to this speed every tick is reported */
 #define WATCH_MAX    64
 #define DUMP_ROW     64
 #define MEM_TOP      0160000            /* the I/O page starts here */
@@ -52,7 +65,10 @@ extern uint16 *M;
 
 static double speed;                    /* 0 = full speed */
 static int paused, steps;
-static int32 tick_acc;
+static int32 sample_acc;
+static int sub;                         /* sample within the tick, 0 at the tick */
+static int reporting;                   /* this tick's rows are written */
+static double reported_wall;            /* when the last reported tick was */
 static uint32 tick_no;
 static int ctl_fd = -1;
 static char cmd_buf[CMD_MAX];
@@ -219,11 +235,32 @@ static void write_sample (void)
     fputc ('\n', out ());
 }
 
+static void write_plant (void)
+{
+    plant_dev_catch_up ();
+    for (int i = 0; i < PLANT_AXES; i++) {
+        const plant_axis *a = &robot_plant.ax[i];
+        fprintf (out (), "P,%.6f,%c,%d,%.3f,%.3f,%.3f,%d\n", robot_plant.now,
+                 plant_axis_names[i], a->code, plant_vcmd (&robot_plant, i), a->v, a->p,
+                 (int) (int16) plant_counter (&robot_plant, i));
+    }
+}
+
+static int report_this_tick (void)
+{
+    double now;
+    if (speed > 0 && speed <= REPORT_ALL)
+        return 1;
+    now = wall ();
+    if (now - reported_wall < REPORT_S)
+        return 0;
+    reported_wall = now;
+    return 1;
+}
+
 static void flush_all (void)
 {
     fflush (out ());
-    if (plant_dev.units->flags & UNIT_ATT)     /* the scope reads the plant trace live */
-        fflush (plant_dev.units->fileref);
 }
 
 static void pace (void)
@@ -254,17 +291,39 @@ static void wait_while_paused (void)
     rebase ();
 }
 
+/* The next event: the next sample, or, when this tick is not reported, the next
+   tick (its samples' intervals added up, so the series stays exact). */
+static void schedule (UNIT *uptr)
+{
+    int32 n = robot_share (TICKS_PER_S * SUBSAMPLES, &sample_acc);
+    while (!reporting && sub < SUBSAMPLES - 1) {
+        n += robot_share (TICKS_PER_S * SUBSAMPLES, &sample_acc);
+        sub++;
+    }
+    sim_activate (uptr, n);
+}
+
 static t_stat lab_svc (UNIT *uptr)
 {
     if (!out ()) return SCPE_OK;
-    tick_no++;
-    read_commands ();
-    if (steps > 0 && --steps == 0) paused = 1;
-    write_sample ();
-    wait_while_paused ();
-    flush_all ();
-    pace ();
-    sim_activate (uptr, robot_share (TICKS_PER_S, &tick_acc));
+    sub = (sub + 1) % SUBSAMPLES;
+    if (sub == 0) {                             /* a 60 Hz tick */
+        tick_no++;
+        read_commands ();
+        if (steps > 0 && --steps == 0) paused = 1;
+        reporting = report_this_tick () || paused || steps > 0;
+        if (reporting)
+            write_sample ();
+    }
+    if (reporting)
+        write_plant ();
+    if (sub == 0) {
+        wait_while_paused ();
+        if (reporting)
+            flush_all ();
+        pace ();
+    }
+    schedule (uptr);
     return SCPE_OK;
 }
 
@@ -290,12 +349,14 @@ static t_stat lab_attach (UNIT *uptr, char *cptr)
     uptr->fileref = f;
     uptr->flags |= UNIT_ATT;
     tick_no = 0;
-    tick_acc = 0;
+    sample_acc = 0;
+    sub = 0;
+    reporting = 1;
     cmd_len = 0;
     rebase ();
     say_watch ();
     say_state ();
-    sim_activate (uptr, robot_share (TICKS_PER_S, &tick_acc));
+    sim_activate (uptr, robot_share (TICKS_PER_S * SUBSAMPLES, &sample_acc));
     return SCPE_OK;
 }
 

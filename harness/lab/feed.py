@@ -1,10 +1,7 @@
-"""Rows from the simulator's two live streams, parsed as they arrive (pure logic).
-
-The plant trace (ATTACH PLANT, pdp11-devices/plant_dev.c) is CSV with a header
-naming its columns; columns are found by name, so a trace that gains columns
-(a gripper, say) still reads. The LAB device (pdp11-devices/lab.c) writes
-tagged rows: W (watched words at a tick), A (watched addresses), S (state),
-M (memory dump), E (a refused command).
+"""The LAB device's live stream (pdp11-devices/lab.c), parsed as it arrives (pure
+logic). Tagged rows: W (watched words at a tick), P (the plant: one axis, the
+plant trace's columns), A (watched addresses), S (state), M (memory dump),
+E (a refused command).
 """
 from dataclasses import dataclass
 
@@ -24,29 +21,16 @@ class Lines:
         return lines
 
 
-class PlantRows:
-    """Plant trace lines -> [time_s, axis index, dac, vcmd, vel, pos, counter]."""
-
-    def __init__(self):
-        self.index = None
-
-    def parse(self, line):
-        """The row as a list, or None for the header and anything unreadable."""
-        fields = line.decode("ascii", "replace").split(",")
-        if "time_s" in fields:                     # the header, wherever its columns are
-            names = {name: i for i, name in enumerate(fields)}
-            self.index = [names.get(c) for c in PLANT_COLUMNS]
-            if None in self.index:
-                self.index = None
-            return None
-        if self.index is None or len(fields) <= max(self.index):
-            return None
-        try:
-            t, axis, dac, vcmd, vel, pos, counter = (fields[i] for i in self.index)
-            return [float(t), AXES.index(axis), int(dac), float(vcmd), float(vel),
-                    float(pos), int(counter)]
-        except ValueError:
-            return None
+def plant_row(row):
+    """A P row -> [time_s, axis index, dac, vcmd, vel, pos, counter], the plant
+    trace's columns in its order; columns after these are ignored, so the row
+    may grow (a gripper, say). None when unreadable."""
+    try:
+        t, axis, dac, vcmd, vel, pos, counter = row.fields[:len(PLANT_COLUMNS)]
+        return [float(t), AXES.index(axis), int(dac), float(vcmd), float(vel), float(pos),
+                int(counter)]
+    except ValueError:
+        return None
 
 
 @dataclass

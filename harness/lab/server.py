@@ -1,8 +1,8 @@
 """The lab bench's web server (aiohttp): the page, its assets, one websocket.
 
 Messages to the page (JSON): hello (end stops, servo names, the console so far),
-con (console output), data (plant rows, simulated time, run state, the servo's
-words; about 30 a second), ended. From the page: key (typed text), speed
+con (console output), data (plant samples, simulated time, run state, the
+servo's words; about 30 a second), ended. From the page: key (typed text), speed
 (real, x10, full), pause, run, step. Who may connect: guard.py.
 """
 import asyncio
@@ -14,9 +14,9 @@ from pathlib import Path
 from aiohttp import WSMsgType, web
 
 from harness.lab import guard
-from harness.lab.feed import thin, words_of
+from harness.lab.feed import plant_row, thin, words_of
 from harness.lab.servo_watch import PER_AXIS, SINGLE, ServoWatch
-from harness.lab.session import SAMPLES_PER_S, SPEEDS, Simulator
+from harness.lab.session import SPEEDS, Simulator
 
 ROOT = Path(__file__).resolve().parents[2]
 STATIC = Path(__file__).resolve().parent / "static"
@@ -36,8 +36,8 @@ class Lab:
     """The simulator, the servo watch and the connected pages."""
 
     def __init__(self, simulator, disk, symbols, speed="real"):
-        self.sim = Simulator(simulator, disk, self.on_console, self.on_plant,
-                             self.on_lab, self.on_ended, speed)
+        self.sim = Simulator(simulator, disk, self.on_console, self.on_lab, self.on_ended,
+                             speed)
         self.watch = ServoWatch(symbols)
         self.pages = set()
         self.scrollback = bytearray()
@@ -53,12 +53,13 @@ class Lab:
         del self.scrollback[:-SCROLLBACK]
         self.broadcast({"t": "con", "d": data.decode("latin-1")})
 
-    def on_plant(self, rows):
-        self.rows.extend(rows)
-        del self.rows[:-20 * ROWS_PER_FRAME]       # a page that cannot keep up skips
-
     def on_lab(self, row):
-        if row.kind == "W":
+        if row.kind == "P":
+            sample = plant_row(row)
+            if sample:
+                self.rows.append(sample)
+                del self.rows[:-20 * ROWS_PER_FRAME]   # a page that cannot keep up skips
+        elif row.kind == "W":
             self.status["time"], self.status["tick"], words = words_of(row)
             self.servo = self.watch.values(words)
         elif row.kind == "M":
@@ -86,7 +87,7 @@ class Lab:
                 asyncio.ensure_future(ws.send_str(text))
 
     def hello(self):
-        return {"t": "hello", "stops": self.sim.stops, "samples_per_s": SAMPLES_PER_S,
+        return {"t": "hello", "stops": self.sim.stops,
                 "per_axis": PER_AXIS, "single": SINGLE, "status": self.status,
                 "con": self.scrollback.decode("latin-1")}
 

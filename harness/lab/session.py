@@ -1,10 +1,9 @@
-"""The simulator behind the lab page: SIMH on a pty, and its two live streams.
+"""The simulator behind the lab page: SIMH on a pty, and the LAB device's stream.
 
-The machine boots as in `make run`, with the plant trace (ATTACH PLANT) and the
-LAB device (pdp11-devices/lab.c) attached to FIFOs in a private temporary
-directory; a third FIFO carries the lab's commands (speed, pause, step, watch,
-dump) to the LAB device. Everything is read on the asyncio loop, so the
-simulator never waits for a reader. Leaving (BYE, ^D, or close()) is the
+The machine boots as in `make run`, with the LAB device (pdp11-devices/lab.c)
+attached to a FIFO in a private temporary directory; a second FIFO carries the
+lab's commands (speed, pause, step, watch, dump) to the device. Everything is
+read on the asyncio loop, so the simulator never waits long for a reader. Leaving (BYE, ^D, or close()) is the
 console's: FLUSH, detach, quit (harness/console_session.py).
 """
 import asyncio
@@ -16,13 +15,12 @@ from pathlib import Path
 import pexpect
 
 from harness.console_session import CTRL_U, Leave, LineWatcher, leave
-from harness.lab.feed import Lines, PlantRows, lab_row
+from harness.lab.feed import Lines, lab_row
 from harness import simh
 from harness.simh import MACHINE_INI
 
 ROOT = Path(__file__).resolve().parents[2]
 KERNEL = ROOT / "build" / "kernel.lda"
-SAMPLES_PER_S = 120                   # plant trace rows per axis per simulated second
 SPEEDS = {"real": 1, "x10": 10, "full": 0}
 STOPS = re.compile(rb"^\s+([XYZT])\s+\S+\s+\S+\s+\S+\s+\S+\s+(-?[\d.]+)\s+(-?[\d.]+)\s+\S+\s*$",
                    re.M)
@@ -40,11 +38,9 @@ def plant_stops(simulator):
     return end_stops(simh.run("show plant\n", simulator=simulator, timeout=30).encode())
 
 
-def boot_script(disk, plant_fifo, lab_fifo, speed, kernel=KERNEL):
+def boot_script(disk, lab_fifo, speed, kernel=KERNEL):
     return (f"do {MACHINE_INI}\n"
             f"attach rl0 {Path(disk).resolve()}\n"
-            f"set plant sample={SAMPLES_PER_S}\n"
-            f"attach plant {plant_fifo}\n"
             f"attach lab {lab_fifo}\n"
             f"set lab speed={speed}\n"
             f"load {kernel}\n"
@@ -53,10 +49,10 @@ def boot_script(disk, plant_fifo, lab_fifo, speed, kernel=KERNEL):
 
 class Simulator:
     """One lab machine. Callbacks (called on the loop): console(bytes),
-    plant(list of rows), lab(LabRow), ended(flushed: bool or None)."""
+    lab(LabRow), ended(flushed: bool or None)."""
 
-    def __init__(self, simulator, disk, console, plant, lab, ended, speed="real"):
-        self.callbacks = console, plant, lab, ended
+    def __init__(self, simulator, disk, console, lab, ended, speed="real"):
+        self.callbacks = console, lab, ended
         self.simulator, self.disk, self.speed = simulator, disk, speed
         self.tmp = tempfile.TemporaryDirectory(prefix="lab-")
         self.watcher = LineWatcher()
@@ -68,26 +64,20 @@ class Simulator:
     def start(self):
         loop = asyncio.get_running_loop()
         tmp = Path(self.tmp.name)
-        plant_fifo, lab_fifo = tmp / "plant.csv", tmp / "lab"
-        for fifo in (plant_fifo, lab_fifo, tmp / "lab.ctl"):
+        lab_fifo = tmp / "lab"
+        for fifo in (lab_fifo, tmp / "lab.ctl"):
             os.mkfifo(fifo, 0o600)
-        # Readers first (SIMH's open for writing waits for one); the command FIFO
+        # The reader first (SIMH's open for writing waits for one); the command FIFO
         # is held open read-write so neither side's open waits for the other.
-        self.fds["plant"] = os.open(plant_fifo, os.O_RDONLY | os.O_NONBLOCK)
         self.fds["lab"] = os.open(lab_fifo, os.O_RDONLY | os.O_NONBLOCK)
         self.ctl = os.open(tmp / "lab.ctl", os.O_RDWR | os.O_NONBLOCK)
         ini = tmp / "lab.ini"
-        ini.write_text(boot_script(self.disk, plant_fifo, lab_fifo, SPEEDS[self.speed]))
+        ini.write_text(boot_script(self.disk, lab_fifo, SPEEDS[self.speed]))
         self.child = pexpect.spawn(str(self.simulator), [str(ini)], timeout=None,
                                    dimensions=(24, 80), cwd=str(ROOT))
         self.child.delaybeforesend = None
-        plant_lines, lab_lines, rows = Lines(), Lines(), PlantRows()
-        console, plant, lab, _ = self.callbacks
-
-        def read_plant(data):
-            parsed = [r for r in map(rows.parse, plant_lines.feed(data)) if r]
-            if parsed:
-                plant(parsed)
+        lab_lines = Lines()
+        console, lab, _ = self.callbacks
 
         def read_lab(data):
             for line in lab_lines.feed(data):
@@ -95,7 +85,6 @@ class Simulator:
                 if row:
                     lab(row)
 
-        self._watch(loop, "plant", read_plant)
         self._watch(loop, "lab", read_lab)
         self.fds["pty"] = self.child.child_fd
         self._watch(loop, "pty", console)
@@ -113,7 +102,7 @@ class Simulator:
             if not data:
                 self._unwatch(name)
                 if name == "pty" and not self.leaving:
-                    self.callbacks[3](None)           # the simulator exited by itself
+                    self.callbacks[2](None)           # the simulator exited by itself
                 return
             handle(data)
         loop.add_reader(fd, readable)
@@ -161,14 +150,14 @@ class Simulator:
             os.close(self.ctl)
             self.child.close(force=True)
             self.tmp.cleanup()
-        self.callbacks[3](flushed)
+        self.callbacks[2](flushed)
 
     def _leave(self, echo):
         if not self.child.isalive():
             return None
         try:
             self.child.send(CTRL_U)
-            return leave(self.child, ("lab", "plant"), echo=echo)
+            return leave(self.child, ("lab",), echo=echo)
         except (pexpect.TIMEOUT, pexpect.EOF, OSError):
             return False
 

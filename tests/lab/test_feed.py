@@ -1,5 +1,5 @@
 """The live streams' parsers (harness/lab/feed.py), on text as the devices write it."""
-from harness.lab.feed import Lines, PlantRows, lab_row, thin, words_of
+from harness.lab.feed import Lines, lab_row, plant_row, thin, words_of
 
 
 def test_lines_keep_a_partial_line_for_the_next_read():
@@ -9,26 +9,11 @@ def test_lines_keep_a_partial_line_for_the_next_read():
     assert lines.feed(b"") == []
 
 
-def test_plant_rows_by_column_name_and_extra_columns_are_ignored():
-    rows = PlantRows()
-    assert rows.parse(b"0.1,X,2048,0,0,0,0") is None          # no header yet
-    assert rows.parse(b"time_s,axis,dac,vcmd,vel,pos,counter,gripper") is None
-    assert rows.parse(b"0.016666667,Z,2100,1015.56,12.5,-4000.000,-3,1") == [
-        0.016666667, 2, 2100, 1015.56, 12.5, -4000.0, -3]
-    assert rows.parse(b"0.1,Q,1,2,3,4,5,6") is None            # no such axis
-    assert rows.parse(b"0.1,X,1") is None                      # cut short
-
-
-def test_plant_rows_follow_reordered_columns():
-    rows = PlantRows()
-    rows.parse(b"axis,time_s,counter,pos,vel,vcmd,dac")
-    assert rows.parse(b"T,2.5,7,8.0,9.0,10.0,2048") == [2.5, 3, 2048, 10.0, 9.0, 8.0, 7]
-
-
-def test_a_header_without_a_needed_column_reads_nothing():
-    rows = PlantRows()
-    rows.parse(b"time_s,axis,dac")
-    assert rows.parse(b"0.1,X,2048") is None
+def test_plant_rows_in_the_trace_columns_and_extra_columns_are_ignored():
+    assert plant_row(lab_row(b"P,0.016667,Z,2100,1015.560,12.500,-4000.000,-3,1")) == [
+        0.016667, 2, 2100, 1015.56, 12.5, -4000.0, -3]
+    assert plant_row(lab_row(b"P,0.1,Q,1,2,3,4,5")) is None      # no such axis
+    assert plant_row(lab_row(b"P,0.1,X,1")) is None              # cut short
 
 
 def test_lab_rows():

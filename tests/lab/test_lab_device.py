@@ -16,8 +16,8 @@ RUN_INSTRUCTIONS = 4_500_000          # 15 simulated seconds: the load, the set-
 
 
 def rows(path, kind):
-    return [line.split(",")[1:] for line in path.read_text().splitlines()
-            if line.startswith(kind + ",")]
+    text = path.read_text() if path.exists() else ""
+    return [line.split(",")[1:] for line in text.splitlines() if line.startswith(kind + ",")]
 
 
 @pytest.fixture
@@ -34,11 +34,11 @@ def test_rows_and_commands(tmp_path, ctl):
     out = tmp_path / "lab"
     ctl("watch 140000 140002\ndump 140000 2\nspeed abc\nwatch 140001\nfly\n")
     out_text = simh.run(f"load {KERNEL}\n" + simh.deposit(0o140000, [0o1234, 0o177777]) +
-                        f"attach lab {out}\nset lab speed=0\nstep 21000\nshow lab\n"
+                        f"attach lab {out}\nset lab speed=10\nstep 21000\nshow lab\n"
                         "detach lab\n")
-    assert "LAB, running, speed=0 (full), 2 words watched: 140000=001234 140002=177777" in out_text
+    assert "LAB, running, speed=10x, 2 words watched: 140000=001234 140002=177777" in out_text
     text = out.read_text()
-    assert text.startswith("A\nS,0.000000,run,0\n")
+    assert text.startswith("A\nS,0.000000,run,0\n")       # at the attach, before SET
     assert rows(out, "A") == [["140000", "140002"]]
     assert rows(out, "M") == [["140000", str(0o1234), "65535"]]
     assert [e[0] for e in rows(out, "E")] == [
@@ -49,6 +49,12 @@ def test_rows_and_commands(tmp_path, ctl):
     assert [s[1] for s in samples] == ["1", "2", "3", "4"]         # every 5000 instructions
     assert samples[0][0] == "0.016667" and samples[-1][0] == "0.066667"
     assert samples[-1][2:] == [str(0o1234), "65535"]
+    plant = rows(out, "P")                       # four samples a tick, every axis
+    assert [p[1] for p in plant[:8]] == list("XYZTXYZT")
+    assert [p[0] for p in plant[::4][:5]] == ["0.004167", "0.008333", "0.012500",
+                                              "0.016667", "0.020833"]
+    x = plant[0][2:]                             # DAC at zero volts; x drifts on its offset
+    assert x[:2] == ["2048", "-58.590"] and float(x[2]) < 0 and x[4] == "0"
 
 
 def test_set_lab_speed_refuses_bad_values_and_keeps_the_old_one(tmp_path):
@@ -74,17 +80,22 @@ def test_pacing_pausing_and_stepping_change_nothing_the_machine_does(tmp_path, c
     plain, plain_out = run_servo(tmp_path, "plain")
     assert b",X," in plain and "800 800 400 0 Abs.Move  ok" in plain_out
 
+    lab = tmp_path / "lab"
+
+    def paused_at():
+        return sorted({float(s[0]) for s in rows(lab, "S") if s[1] == "pause"})
+
     def user():                        # pause early, step three ticks, go on
-        for command in ("step", "step", "step", "run"):
-            time.sleep(0.1)
+        for n, command in enumerate(("step", "step", "step", "run"), start=1):
+            deadline = time.monotonic() + 30
+            while len(paused_at()) < n and time.monotonic() < deadline:
+                time.sleep(0.02)       # each step once the last one has paused
             ctl(command + "\n")
     ctl("speed 100\npause\n")
-    lab = tmp_path / "lab"
     watched, watched_out = run_servo(tmp_path, "watched", lab, user)
     assert watched == plain
     assert watched_out.replace(str(tmp_path / "watched"), "") == plain_out.replace(
         str(tmp_path / "plain"), "")
-    states = rows(lab, "S")
-    paused_at = sorted({float(s[0]) for s in states if s[1] == "pause"})
-    assert [round((b - a) * 60, 3) for a, b in zip(paused_at, paused_at[1:])] == [1, 1, 1]
-    assert states[-1][1] == "run" and float(states[-1][0]) == paused_at[-1]
+    states, pauses = rows(lab, "S"), paused_at()
+    assert [round((b - a) * 60, 3) for a, b in zip(pauses, pauses[1:])] == [1, 1, 1]
+    assert states[-1][1] == "run" and float(states[-1][0]) == pauses[-1]

@@ -8,6 +8,7 @@ const COLORS = ["#58a6ff", "#3fb950", "#d29922", "#bc8cff"];
 const COUNTS_PER_UNIT = [800, 800, 800, 16000 / 360];     // plant.c: inches, degrees
 const UNITS = ["in", "in", "in", "\u00b0"];
 const KEEP_S = 40;                 // seconds of trace kept per axis (the widest window + margin)
+const GAP_S = 1 / 30;              // further apart than this: ticks the fast run did not report
 const ROW = { t: 0, axis: 1, dac: 2, vcmd: 3, vel: 4, pos: 5, counter: 6 };
 
 // ---- the connection ----------------------------------------------------------------
@@ -303,7 +304,7 @@ function drawScope() {
       g.strokeStyle = color; g.lineWidth = 2; g.beginPath();
       rows.forEach((r, k) => {
         const X = tx(r[ROW.t]), Y = ty(r[ROW[key]]);
-        if (k === 0) g.moveTo(X, Y);
+        if (k === 0 || r[ROW.t] - rows[k - 1][ROW.t] > GAP_S) g.moveTo(X, Y);  // ticks not reported
         else if (strip.steps || key === "counter") { g.lineTo(X, ty(rows[k - 1][ROW[key]])); g.lineTo(X, Y); }
         else g.lineTo(X, Y);
       });
