@@ -18,7 +18,7 @@ include $(filter-out mk/simh.mk mk/python.mk,$(wildcard mk/*.mk))
 all: $(ALL_PRODUCTS)
 
 test: all venv
-	@$(PY) -m pytest -q tests
+	@$(PY) -m pytest -q -rs tests
 
 bench: all venv $(BENCHES)
 

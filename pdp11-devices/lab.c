@@ -329,25 +329,20 @@ static t_stat lab_svc (UNIT *uptr)
 
 static t_stat lab_attach (UNIT *uptr, char *cptr)
 {
-    FILE *f;
-    char *name;
+    t_stat r;
+    char *ctl;
     if (uptr->flags & UNIT_ATT)
         lab_detach (uptr);
     signal (SIGPIPE, SIG_IGN);                  /* a vanished reader is no reason to stop */
-    if ((f = fopen (cptr, "w")) == NULL) {
-        printf ("LAB: cannot write %s: %s\n", cptr, strerror (errno));
-        return SCPE_OPENERR;
-    }
-    if ((name = (char *) malloc (strlen (cptr) + 5)) == NULL) {
-        fclose (f);
+    if ((ctl = (char *) malloc (strlen (cptr) + 5)) == NULL)
         return SCPE_MEM;
+    if ((r = robot_attach_text (uptr, cptr, "LAB: cannot write")) != SCPE_OK) {
+        free (ctl);
+        return r;
     }
-    sprintf (name, "%s.ctl", cptr);
-    ctl_fd = open (name, O_RDONLY | O_NONBLOCK);
-    strcpy (name, cptr);
-    uptr->filename = name;
-    uptr->fileref = f;
-    uptr->flags |= UNIT_ATT;
+    sprintf (ctl, "%s.ctl", cptr);
+    ctl_fd = open (ctl, O_RDONLY | O_NONBLOCK);
+    free (ctl);
     tick_no = 0;
     sample_acc = 0;
     sub = 0;
@@ -365,13 +360,9 @@ static t_stat lab_detach (UNIT *uptr)
     if (!(uptr->flags & UNIT_ATT))
         return SCPE_OK;
     sim_cancel (uptr);
-    fclose (uptr->fileref);
+    robot_detach_text (uptr);
     if (ctl_fd >= 0) close (ctl_fd);
     ctl_fd = -1;
-    free (uptr->filename);
-    uptr->fileref = NULL;
-    uptr->filename = NULL;
-    uptr->flags &= ~UNIT_ATT;
     paused = steps = 0;
     return SCPE_OK;
 }

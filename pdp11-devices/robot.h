@@ -22,6 +22,10 @@ void plant_dev_init (void);
 void plant_dev_rate_changed (int32 old_rate);                        /* power-up state */
 void plant_dev_command_done (void);               /* after each SCP command */
 
+/* Text files written by a device (text_attach.c): `what` starts the error message. */
+t_stat robot_attach_text (UNIT *uptr, char *cptr, const char *what);
+void robot_detach_text (UNIT *uptr);
+
 /* Console input pacing (console_pacing.c). */
 void console_pacing_install (void);
 void console_pacing_rate_changed (void);

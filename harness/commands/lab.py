@@ -53,5 +53,8 @@ def run(args):
                                     announce))
     except OSError as err:
         raise ConsoleError(f"cannot serve on 127.0.0.1:{args.port}: {err.strerror}") from err
-    print("[lab] " + ("blocks flushed; " if flushed else "") + f"disk {disk} detached. Bye.")
+    if flushed is None:
+        print("[lab] the simulator exited (blocks are FLUSHed only when you leave with BYE)")
+    else:
+        print("[lab] " + ("blocks flushed; " if flushed else "") + f"disk {disk} detached. Bye.")
     return 0 if flushed is not False else 1
