@@ -54,7 +54,7 @@ def have_browser():
     return CHROMIUM.exists() and CHROMEDRIVER.exists()
 
 
-def headless_browser(width=1600, height=900):
+def headless_browser(width=1920, height=1080):
     """Debian's Chromium through its chromium-driver (Selenium downloads nothing)."""
     from selenium import webdriver
     from selenium.webdriver.chrome.service import Service

@@ -78,6 +78,8 @@ def test_pause_holds_simulated_time_and_step_is_one_tick(page):
     stepped = js(page, "window.lab.status")
     assert stepped["state"] == "pause"
     assert abs(stepped["time"] - held["time"] - 1 / 60) < 2e-6
+    click(page, '#axes button[data-axis="0"]')       # x's hunting, tick by tick
+    click(page, '#windows button[data-window="2"]')
     page.save_screenshot(str(ARTIFACTS / "lab.png"))
     click(page, "#pause")                            # now reads "Run"
     wait_for("the run to go on", lambda: js(page, "window.lab.status.time") > stepped["time"])

@@ -312,12 +312,19 @@ function drawScope() {
     }
     label(g, hi.toFixed(0), left - 6, top + 12, "#8b949e", "right", 12);
     label(g, lo.toFixed(0), left - 6, bottom, "#8b949e", "right", 12);
-    let lx = left + 8;
-    label(g, `${AXES[lab.axis]} ${strip.title}`, lx, top + 17, COLORS[lab.axis], "left", 14);
-    lx += g.measureText(`${AXES[lab.axis]} ${strip.title}`).width + 18;
-    for (const [, name, color] of strip.series.concat(want !== null ? [[0, "Desire.Pos", "#f0883e"]] : [])) {
-      label(g, `\u2014 ${name}`, lx, top + 17, color, "left", 13);
-      lx += g.measureText(`\u2014 ${name}`).width + 14;
+    const legend = [[`${AXES[lab.axis]} ${strip.title}`, COLORS[lab.axis], 14]].concat(
+      strip.series.concat(want !== null ? [[0, "Desire.Pos", "#f0883e"]] : [])
+        .map(([, name, color]) => [`\u2014 ${name}`, color, 13]));
+    let lx = left + 8, width = 0;
+    for (const [text, , size] of legend) {
+      g.font = `${size}px "DejaVu Sans", sans-serif`;
+      width += g.measureText(text).width + 14;
+    }
+    g.fillStyle = "rgba(11, 18, 32, 0.85)";          // the legend stays readable over the traces
+    g.fillRect(left + 2, top + 2, width + 6, 21);
+    for (const [text, color, size] of legend) {
+      label(g, text, lx, top + 17, color, "left", size);
+      lx += g.measureText(text).width + 14;
     }
   });
   if (lab.frozenAt !== null) label(g, "FROZEN", right - 8, 20, "#ff5c5c", "right", 15);
@@ -376,6 +383,7 @@ document.getElementById("png").addEventListener("click", () =>
   download(`scope-${AXES[lab.axis]}-${lab.status.time.toFixed(3)}s.png`, document.getElementById("scope").toDataURL("image/png")));
 
 // ---- the servo's words ----------------------------------------------------------------------
+const STATES = { 0: "Stop", 1: "Move" };
 const SHORT = { "Desire.Pos": "Desire.Pos", "Command.Status": "Cmd.Status", "Delay.Left": "Delay.Left" };
 function buildTable() {
   const head = document.querySelector("#servo thead");
@@ -392,7 +400,8 @@ function drawTable() {
     const moving = lab.servo["Command.Status"] && lab.servo["Command.Status"][i];
     html += `<tr><td class="axis" style="color:${COLORS[i]}">${a}</td><td>${row ? row[ROW.counter] : ""}</td>` +
       lab.perAxis.map((n) => {
-        const v = lab.servo[n] ? lab.servo[n][i] : "";
+        let v = lab.servo[n] ? lab.servo[n][i] : "";
+        if (n === "State" && v in STATES) v = `${STATES[v]} ${v}`;   // block 1000's CONs
         return `<td${moving && n === "Command.Status" ? ' class="moving"' : ""}>${v}</td>`;
       }).join("") + "</tr>";
   });
