@@ -30,7 +30,7 @@ lab-browser:
 test: lab-browser
 
 test-lab-long: $(LAB_NEEDS) $(PRISTINE_DSK) lab-browser
-	@LAB_LONG=1 $(PY) -m pytest -q tests/lab -k long
+	@LAB_LONG=1 $(PY) -m pytest -q tests/lab/test_long_session.py
 
 bench-lab: $(LAB_NEEDS) $(PRISTINE_DSK) lab-browser
 	@$(PY) -m harness.lab.bench
