@@ -12,6 +12,7 @@ into place only when complete, so a failure never leaves a half-written file.
 """
 import os
 import re
+import stat
 import tempfile
 from pathlib import Path
 
@@ -109,6 +110,47 @@ def read_image(path):
         raise DiskError(f"{path}: {len(data)} bytes is not an RL02 image "
                         f"({RL02_BYTES} bytes = {BLOCKS} blocks of {BLOCK_BYTES})")
     return data
+
+
+def check_image(path, writable=True):
+    """Refuse an image SIMH could not use as the RL02: raise DiskError with one line
+    naming the file and what is wrong (missing, not a file, empty, not RL02-sized,
+    unreadable, or, when `writable`, write-locked). Reads nothing but the metadata
+    and opens the file; SIMH itself would ask "Overwrite last track?" of an empty
+    file and boot with no disk, or a read-only one, from a bad one."""
+    path = Path(path)
+    try:
+        st = path.stat()
+    except FileNotFoundError:
+        raise DiskError(f"{path}: no such disk image") from None
+    except OSError as err:
+        raise DiskError(f"{path}: cannot reach the disk image: {err.strerror}") from err
+    if not stat.S_ISREG(st.st_mode):
+        raise DiskError(f"{path}: not a disk image (not a regular file)")
+    if st.st_size == 0:
+        raise DiskError(f"{path}: empty (0 bytes), not an RL02 image "
+                        f"({RL02_BYTES} bytes)")
+    if st.st_size != RL02_BYTES:
+        raise DiskError(f"{path}: {st.st_size} bytes is not an RL02 image "
+                        f"({RL02_BYTES} bytes = {BLOCKS} blocks of {BLOCK_BYTES})")
+    # Root opens a file whatever its mode: a mode with no read (write) bit is
+    # taken as the owner's intent all the same.
+    if st.st_mode & 0o444 == 0:
+        raise DiskError(f"{path}: cannot be read (no read permission)")
+    _check_opens(path, "rb", "cannot be read")
+    if writable:
+        locked = "write-locked: blocks could not be saved to it"
+        if st.st_mode & 0o222 == 0:
+            raise DiskError(f"{path}: {locked} (no write permission)")
+        _check_opens(path, "r+b", locked)
+
+
+def _check_opens(path, mode, what):
+    try:
+        with open(path, mode):
+            pass
+    except OSError as err:
+        raise DiskError(f"{path}: {what} ({err.strerror})") from err
 
 
 def image_block(image, n):

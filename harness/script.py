@@ -16,7 +16,7 @@ from pathlib import Path
 
 MAX_WAIT = 3600.0            # simulated seconds in one #wait
 SIMH_VERBS = ("show", "set", "examine", "deposit")   # commands that do not run the machine
-MAX_LINE = 127               # what the kernel's ACCEPT takes (TIB-SIZE - 1)
+MAX_LINE = 255               # what the kernel's ACCEPT takes (TIB-SIZE - 1, build/kernel.map)
 
 
 class ScriptSyntaxError(ValueError):

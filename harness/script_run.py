@@ -56,10 +56,13 @@ class Result:
 
 
 def _failure(answer):
+    """What went wrong with a line ("" if nothing). A stop comes first: a line that
+    printed an error and then ran on is reported as having hit the line limit."""
+    if answer.stopped:
+        printed = f"; it had printed Error: {answer.error}" if answer.error else ""
+        return f"the simulator stopped: {answer.stopped}{printed}"
     if answer.error:
         return f"Error: {answer.error}"
-    if answer.stopped:
-        return f"the simulator stopped: {answer.stopped}"
     return ""
 
 
@@ -83,9 +86,16 @@ def run_steps(machine, steps, keep_going=False):
         answer = machine.wait(step.seconds) if step.kind == "wait" else machine.line(step.text)
         transcript.console(answer.output)
         message = _failure(answer)
-        if message:
-            result.failures.append(Failure(step.lineno, step.text, message))
-            if answer.stopped or not keep_going:   # a stopped machine cannot go on
-                break
+        if not message:
+            continue
+        if keep_going and answer.running:        # stop the runaway line as a user would
+            stopped = machine.interrupt()
+            transcript.console(stopped.output)
+            message += ("; ^C typed, the run goes on" if not stopped.stopped else
+                        f"; ^C typed, and still {stopped.stopped}")
+            answer = stopped
+        result.failures.append(Failure(step.lineno, step.text, message))
+        if answer.stopped or not keep_going:     # a stopped machine cannot go on
+            break
     result.transcript = transcript.text()
     return result

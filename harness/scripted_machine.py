@@ -28,7 +28,7 @@ from pathlib import Path
 
 import pexpect
 
-from harness.simh import MACHINE_INI, PDP11, SimhError
+from harness.simh import MACHINE_INI, PDP11, SimhError, examined
 
 ROOT = Path(__file__).resolve().parent.parent
 KERNEL = ROOT / "build" / "kernel.lda"
@@ -55,6 +55,7 @@ class Answer:
     output: str          # the console output: echo, what the line printed, " ok" or error
     error: str = ""      # the FORTH's error message ("" if none)
     stopped: str = ""    # why the simulator stopped if not at the next prompt
+    running: bool = False  # stopped at the line limit: the line is still running
 
     @property
     def ok(self):
@@ -197,11 +198,23 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         limit = self.line_limit if limit is None else limit
         return self._limited(self._run(f"step {self._steps(limit)}", "resume"), limit)
 
+    def interrupt(self, limit=None):
+        """Type ^C, as a user stops a runaway line, and run to the next prompt (or
+        for `limit` simulated seconds). The character arrives through the DL11 as
+        a key would (RBUF = 3, DONE, and the receive interrupt when IE is set), not
+        through the ring: the kernel's receive interrupt turns it into THROW -28."""
+        ie = examined(self.simh("examine tti ie")).get("IE")
+        for command in ("deposit tti buf 3", "deposit tti done 1") + (
+                ("deposit tti int 1",) if ie else ()):
+            self.simh(command)
+        return self.resume(limit)
+
     @staticmethod
     def _limited(answer, limit):
         if answer.stopped == "step":
             answer.stopped = (f"no prompt within {limit:g} simulated seconds "
                               "(the line is still running)")
+            answer.running = True
         return answer
 
     def wait(self, seconds):

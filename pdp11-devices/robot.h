@@ -30,6 +30,9 @@ void robot_detach_text (UNIT *uptr);
 void console_pacing_install (void);
 void console_pacing_rate_changed (void);
 
+/* RL02 write-through (rl_durable.c). */
+void rl_durable_install (void);
+
 extern DEVICE kwl_dev, drv_dev, aav_dev, plant_dev, lab_dev;
 
 /* Byte writes (SIMH passes the byte in data<7:0>, PA<0> says which half). */

@@ -22,8 +22,10 @@
    Hooks. scp.c declares `void (*sim_vm_init)(void)` without initialising it
    and calls it first thing in main(); with -fcommon this file's initialised
    definition is the one linked. robot_vm_init fills the table, replaces the
-   console keyboard's service routine (console_pacing.c) and installs
-   sim_vm_post, which scp.c calls after every command (used to end a
+   console keyboard's service routine (console_pacing.c), wraps the RL02
+   units' service routine so that a written block is fflush()ed and fsync()ed
+   before the controller reports it done (rl_durable.c: FLUSH is durable), and
+   installs sim_vm_post, which scp.c calls after every command (used to end a
    SET PLANT axis selection). */
 #include "robot.h"
 
@@ -61,6 +63,7 @@ static void robot_vm_init (void)
     sim_devices[n] = NULL;
     plant_dev_init ();
     console_pacing_install ();
+    rl_durable_install ();
     sim_vm_post = &robot_vm_post;
 }
 

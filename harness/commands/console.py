@@ -3,7 +3,9 @@ import argparse
 import shutil
 from pathlib import Path
 
-from harness.console_session import HINT, session
+from harness.commands.argtypes import positive
+from harness.console_session import BUSY_WAIT, HINT, session
+from harness.disk import DiskError, check_image
 from harness.simh import PDP11
 
 NAME = "console"
@@ -17,7 +19,7 @@ class ConsoleError(RuntimeError):
     """The console cannot start."""
 
 
-ERRORS = (ConsoleError,)
+ERRORS = (ConsoleError, DiskError)
 
 DESCRIPTION = f"""\
 Boot the FORTH on the robot's PDP-11/23 and join your terminal to its console,
@@ -40,15 +42,18 @@ def configure(parser):
                         help="full speed instead of the 11/23's real-time pace")
     parser.add_argument("--trace", metavar="FILE", help="record the plant trace (CSV)")
     parser.add_argument("--simulator", default=str(PDP11), help=argparse.SUPPRESS)
+    # wall seconds a running word gets at BYE before ^C stops it (tests shorten it)
+    parser.add_argument("--busy-wait", type=positive, default=BUSY_WAIT,
+                        help=argparse.SUPPRESS)
     parser.set_defaults(run=run)
 
 
 def working_disk(requested):
-    """The image to attach; the default working copy is made when missing."""
+    """The image to attach, checked (harness.disk.check_image: the console changes
+    it, so it must be writable); the default working copy is made when missing."""
     if requested:
         disk = Path(requested)
-        if not disk.is_file():
-            raise ConsoleError(f"{disk}: no such disk image")
+        check_image(disk)
         return disk
     if not WORK_DISK.is_file():
         if not PRISTINE.is_file():
@@ -58,6 +63,7 @@ def working_disk(requested):
         shutil.copyfile(PRISTINE, tmp)
         tmp.replace(WORK_DISK)
         print(f"[console] working disk {WORK_DISK} created from {PRISTINE}")
+    check_image(WORK_DISK)
     return WORK_DISK
 
 
@@ -67,4 +73,5 @@ def run(args):
         raise ConsoleError(f"{args.simulator}: no simulator (run make)")
     if args.trace and not Path(args.trace).resolve().parent.is_dir():
         raise ConsoleError(f"{args.trace}: its directory does not exist")
-    return session(args.simulator, disk, trace=args.trace, fast=args.fast)
+    return session(args.simulator, disk, trace=args.trace, fast=args.fast,
+                   busy_wait=args.busy_wait)

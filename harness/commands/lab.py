@@ -49,12 +49,11 @@ def run(args):
                            "(make lab-assets)")
     symbols = read_kernel_map(KERNEL_MAP)
     try:
-        flushed = asyncio.run(serve(args.simulator, disk, symbols, args.port, args.speed,
+        safe = asyncio.run(serve(args.simulator, disk, symbols, args.port, args.speed,
                                     announce))
     except OSError as err:
         raise ConsoleError(f"cannot serve on 127.0.0.1:{args.port}: {err.strerror}") from err
-    if flushed is None:
-        print("[lab] the simulator exited (blocks are FLUSHed only when you leave with BYE)")
-    else:
-        print("[lab] " + ("blocks flushed; " if flushed else "") + f"disk {disk} detached. Bye.")
-    return 0 if flushed is not False else 1
+    if safe is None:
+        print("[lab] the simulator exited on its own: blocks UPDATEd since the last "
+              f"FLUSH, if any, were not written to {disk}")
+    return 0 if safe else 1

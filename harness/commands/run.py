@@ -7,14 +7,14 @@ from pathlib import Path
 
 from harness import script
 from harness.commands.argtypes import positive
-from harness.disk import write_atomic
+from harness.disk import DiskError, check_image, write_atomic
 from harness.script_run import run_steps
 from harness.scripted_machine import KERNEL, ScriptError, ScriptedMachine
 from harness.simh import PDP11, SimhError
 
 NAME = "run"
 HELP = "run a console script on a fresh copy of the disk: transcript and plant trace"
-ERRORS = (script.ScriptSyntaxError, ScriptError, SimhError)
+ERRORS = (script.ScriptSyntaxError, ScriptError, SimhError, DiskError)
 PRISTINE = Path(__file__).resolve().parents[2] / "build" / "robot.dsk"
 
 DESCRIPTION = """\
@@ -76,6 +76,14 @@ def _check_writable(path):
         raise ScriptError(f"{parent}: no such directory for {path.name}")
 
 
+def check_start_image(disk):
+    """The image a run starts from is only read (each run boots a copy): it must be
+    there, readable and RL02-sized (harness.disk.check_image); DiskError if not."""
+    if disk == PRISTINE and not disk.exists():
+        raise DiskError(f"{disk}: no such disk image (run make)")
+    check_image(disk, writable=False)
+
+
 def run(args):
     steps = script.read(args.script)
     transcript_path, trace_path = output_paths(args)
@@ -84,14 +92,13 @@ def run(args):
     for path in (transcript_path, trace_path):
         _check_writable(path)
     disk = Path(args.disk)
-    if not disk.is_file():
-        raise ScriptError(f"{disk}: no such disk image" +
-                          (" (run make)" if disk == PRISTINE else ""))
+    check_start_image(disk)
     with tempfile.TemporaryDirectory(prefix="harness-run-") as tmp:
         try:
             shutil.copyfile(disk, Path(tmp) / "robot.dsk")
         except OSError as e:
             raise ScriptError(f"{disk}: cannot copy the disk image: {e.strerror}") from e
+        check_image(Path(tmp) / "robot.dsk")         # the copy the machine changes
         with ScriptedMachine("robot.dsk", trace="trace.csv", cwd=tmp,
                              simulator=args.simulator, line_limit=args.line_limit,
                              kernel=Path(args.kernel),

@@ -45,7 +45,7 @@ class Lab:
         self.status = {"time": 0.0, "tick": 0, "state": "run", "speed": speed}
         self.servo = {}
         self.done = asyncio.Event()
-        self.flushed = None
+        self.safe = None
 
     # ---- from the simulator ---------------------------------------------------------
     def on_console(self, data):
@@ -74,9 +74,9 @@ class Lab:
             print(f"[lab] the LAB device refused a command: {','.join(row.fields)}",
                   file=sys.stderr)
 
-    def on_ended(self, flushed):
-        self.flushed = flushed
-        self.broadcast({"t": "ended", "flushed": flushed})
+    def on_ended(self, safe):
+        self.safe = safe
+        self.broadcast({"t": "ended", "safe": safe})
         self.done.set()
 
     # ---- to the pages ---------------------------------------------------------------
@@ -170,7 +170,8 @@ def make_app(lab, token, port_of):
 
 
 async def serve(simulator, disk, symbols, port, speed, announce):
-    """Run the lab until the user leaves; True if the FORTH FLUSHed its blocks."""
+    """Run the lab until the user leaves; True if every UPDATEd block was written
+    and the disk detached, None if the simulator exited by itself."""
     token = guard.new_token()
     lab = Lab(simulator, disk, symbols, speed)
     runner = None
@@ -197,4 +198,4 @@ async def serve(simulator, disk, symbols, port, speed, announce):
         for ws in list(lab.pages):                # else cleanup waits for the pages to go
             await ws.close()
         await runner.cleanup()
-    return lab.flushed
+    return lab.safe

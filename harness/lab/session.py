@@ -14,7 +14,8 @@ from pathlib import Path
 
 import pexpect
 
-from harness.console_session import CTRL_U, Leave, LineWatcher, leave
+from harness.console_session import leave, say
+from harness.console_watch import Leave, LineWatcher
 from harness.lab.feed import Lines, lab_row
 from harness import simh
 from harness.simh import MACHINE_INI
@@ -49,7 +50,7 @@ def boot_script(disk, lab_fifo, speed, kernel=KERNEL):
 
 class Simulator:
     """One lab machine. Callbacks (called on the loop): console(bytes),
-    lab(LabRow), ended(flushed: bool or None)."""
+    lab(LabRow), ended(safe: bool, or None when the simulator exited by itself)."""
 
     def __init__(self, simulator, disk, console, lab, ended, speed="real"):
         self.callbacks = console, lab, ended
@@ -87,7 +88,11 @@ class Simulator:
 
         self._watch(loop, "lab", read_lab)
         self.fds["pty"] = self.child.child_fd
-        self._watch(loop, "pty", console)
+
+        def read_console(data):
+            self.watcher.output(data)             # is SIMH's sim> up?
+            console(data)
+        self._watch(loop, "pty", read_console)
 
     def _watch(self, loop, name, handle):
         fd = self.fds[name]
@@ -116,13 +121,15 @@ class Simulator:
 
     # ---- from the page ------------------------------------------------------------
     def keys(self, data):
-        """What the user typed; BYE or ^D starts the way out."""
+        """What the user typed; a way out (BYE, ^D, ^C or QUIT at sim>:
+        harness/console_watch.py) starts leaving, as the console does."""
         if self.leaving:
             return
         try:
             self.watcher.feed(data)
-        except Leave:                    # as the console: the BYE line is killed with ^U
-            asyncio.get_running_loop().create_task(self.close())
+        except Leave as way:
+            os.write(self.child.child_fd, way.typed)     # typed ahead of the way out
+            asyncio.get_running_loop().create_task(self.close(way.how))
             return
         os.write(self.child.child_fd, data)
 
@@ -134,8 +141,10 @@ class Simulator:
             pass                                    # the device is not reading: dropped
 
     # ---- leaving --------------------------------------------------------------------
-    async def close(self):
-        """FLUSH, detach, quit, as the console does; then the `ended` callback."""
+    async def close(self, how="BYE"):
+        """FLUSH, check, detach, quit, as the console does; the report goes to the
+        page and the shell; then the `ended` callback with True when every block
+        was written (None when the simulator had already exited)."""
         if self.leaving or self.child is None:
             return
         self.leaving = True
@@ -143,23 +152,25 @@ class Simulator:
         self._unwatch("pty")
         echo = _Echo(asyncio.get_running_loop(), self.callbacks[0])
         try:
-            flushed = await asyncio.to_thread(self._leave, echo)
+            safe = await asyncio.to_thread(self._leave, how, echo)
         finally:
             for name in list(self.fds):
                 self._unwatch(name)
             os.close(self.ctl)
             self.child.close(force=True)
             self.tmp.cleanup()
-        self.callbacks[2](flushed)
+        self.callbacks[2](safe)
 
-    def _leave(self, echo):
+    def _leave(self, how, echo):
         if not self.child.isalive():
             return None
-        try:
-            self.child.send(CTRL_U)
-            return leave(self.child, ("lab",), echo=echo)
-        except (pexpect.TIMEOUT, pexpect.EOF, OSError):
-            return False
+        if how != "BYE":
+            say(f"{how}: leaving; the FORTH FLUSHes its blocks first")
+        gone = leave(self.child, self.disk, None, devices=("lab",), echo=echo)
+        report = gone.report() + ["Bye."]
+        say(*report)
+        echo.write("".join(f"\r\n[lab] {line}" for line in report).encode() + b"\r\n")
+        return gone.safe
 
 
 class _Echo:

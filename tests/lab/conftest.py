@@ -17,7 +17,7 @@ def lab_server(tmp_path_factory):
     yield server
     status = server.stop()
     assert status == 0, f"the lab exited with {status}:\n{server.text()}"
-    assert "blocks flushed; disk" in server.text()
+    assert "FLUSH answered ok" in server.text()
 
 
 @pytest.fixture(scope="session")

@@ -88,5 +88,5 @@ def test_pause_holds_simulated_time_and_step_is_one_tick(page):
 def test_bye_in_the_page_leaves_and_flushes(page, lab_server):
     page.find_element(By.CSS_SELECTOR, "#terminal textarea").send_keys("BYE\n")
     assert lab_server.proc.wait(timeout=60) == 0
-    assert "blocks flushed; disk" in lab_server.text()
+    assert "FLUSH answered ok" in lab_server.text()
     wait_for("the page to say so", lambda: js(page, "window.lab.ended"))

@@ -1,4 +1,7 @@
-"""Paths and the build check shared by the console and run tests."""
+"""Paths, the build check and the fsync fault injector shared by the console, run
+and disk tests."""
+import shutil
+import subprocess
 from pathlib import Path
 
 import pytest
@@ -11,3 +14,17 @@ KERNEL = ROOT / "build" / "kernel.lda"
 needs_build = pytest.mark.skipif(
     not all(p.is_file() for p in (PRISTINE, SIMULATOR, KERNEL)),
     reason="build/pdp11, build/kernel.lda and build/robot.dsk are built by make")
+
+
+FAILING_FSYNC = "#include <errno.h>\nint fsync (int fd) { errno = EIO; return -1; }\n"
+
+
+def failing_fsync_library(directory):
+    """A shared library that makes every fsync fail with EIO, for LD_PRELOAD: the
+    host refusing to make a write durable (pdp11-devices/rl_durable.c's error path)."""
+    if shutil.which("gcc") is None:
+        pytest.skip("gcc is needed to build the fsync fault injector")
+    source, library = Path(directory) / "fsync_eio.c", Path(directory) / "fsync_eio.so"
+    source.write_text(FAILING_FSYNC)
+    subprocess.run(["gcc", "-shared", "-fPIC", "-o", str(library), str(source)], check=True)
+    return library

@@ -1,5 +1,7 @@
 """The interactive console through a pty: boot, a command, SIMH's prompt and
-back, and a clean exit that leaves an UPDATEd block on the disk."""
+back, and every way out (BYE, ^D, ^C and QUIT at sim>) leaves an UPDATEd block on
+the disk, or says plainly which blocks were not written."""
+import os
 import shutil
 import sys
 
@@ -7,17 +9,22 @@ import pexpect
 import pytest
 
 from harness.console_session import probe_prompt
-from tests.run.common import PRISTINE, ROOT, needs_build
+from tests.run.common import PRISTINE, ROOT, failing_fsync_library, needs_build
 
 pytestmark = needs_build
 
 BLOCK = 100
 
 
-def console(disk, *extra):
+# the pty turns the harness's CR LF into CR CR LF
+FLUSHED = r"FLUSH answered ok: every UPDATEd block is written to .*\r+\n" \
+          r"\[console\] Disk .* detached\.\r+\n\[console\] Bye\."
+
+
+def console(disk, *extra, env=None):
     child = pexpect.spawn(sys.executable, ["-m", "harness", "console", "--fast",
                                            "--disk", str(disk), *extra],
-                          cwd=str(ROOT), timeout=30, encoding="latin-1")
+                          cwd=str(ROOT), timeout=30, encoding="latin-1", env=env)
     child.delaybeforesend = None
     child.expect("Console: leave with BYE")
     child.expect(r"blocks 0-\d+\.\r\n ok\r\n")
@@ -51,7 +58,7 @@ def test_console_command_simh_prompt_and_bye_flushes(tmp_path):
     write_block_word(child, "typed at the console")
     assert not block_text(disk, BLOCK).startswith(b"typed")  # still in a buffer
     child.send("BYE\r")
-    child.expect(r"blocks flushed; disk .* detached\. Bye\.")
+    child.expect(FLUSHED)
     child.expect(pexpect.EOF)
     child.close()
     assert child.exitstatus == 0
@@ -59,19 +66,83 @@ def test_console_command_simh_prompt_and_bye_flushes(tmp_path):
     assert (tmp_path / "t.csv").read_text().startswith("time_s,axis,")
 
 
-def test_ctrl_d_from_the_simh_prompt_also_flushes(tmp_path):
+# (every abbreviation of QUIT, EXIT and BYE: tests/run/test_console_watch.py)
+@pytest.mark.parametrize("keys,how", [("\x04", None),        # ^D at sim>
+                                      ("  q\r", "SIMH's QUIT at its prompt")])
+def test_every_way_out_of_the_simh_prompt_flushes_first(tmp_path, keys, how):
     disk = tmp_path / "work.dsk"
     shutil.copyfile(PRISTINE, disk)
     child = console(disk)
-    write_block_word(child, "left with control-D")
+    write_block_word(child, f"left with {keys!r}")
     child.send("\x05")
     child.expect("sim> ")
-    child.send("\x04")                                   # ^D at sim>: leave all the same
-    child.expect(r"blocks flushed; disk .* detached\. Bye\.")
+    child.send(keys)
+    if how:
+        child.expect_exact(f"[console] {how}: leaving; the FORTH FLUSHes its blocks first")
+    child.expect(FLUSHED)
     child.expect(pexpect.EOF)
     child.close()
     assert child.exitstatus == 0
-    assert block_text(disk, BLOCK).startswith(b"left with control-D")
+    assert block_text(disk, BLOCK).startswith(f"left with {keys!r}".encode())
+
+
+def test_ctrl_c_is_the_forths_until_sim_where_it_leaves_after_flush(tmp_path):
+    disk = tmp_path / "work.dsk"
+    shutil.copyfile(PRISTINE, disk)
+    child = console(disk)
+    child.send("\x05")
+    child.expect("sim> ")
+    child.send("examine 0\r")                  # E... is EXAMINE, not EXIT
+    child.expect("sim> ")
+    child.send("cont\r")
+    assert probe_prompt(child) == 0
+    child.send("\x03")                          # ^C to the FORTH: not a way out
+    child.send("2 3 + .\r")
+    child.expect(r"5  ok\r\n")
+    write_block_word(child, "left with control-C")
+    child.send("\x05")
+    child.expect("sim> ")
+    child.send("\x03")                          # at sim>: SIMH would die of it
+    child.expect_exact("[console] ^C at SIMH's prompt: leaving; the FORTH FLUSHes its "
+                       "blocks first")
+    child.expect(FLUSHED)
+    child.expect(pexpect.EOF)
+    child.close()
+    assert child.exitstatus == 0
+    assert block_text(disk, BLOCK).startswith(b"left with control-C")
+
+
+def test_bye_while_a_word_runs_stops_it_with_ctrl_c_and_flushes(tmp_path):
+    disk = tmp_path / "work.dsk"
+    shutil.copyfile(PRISTINE, disk)
+    child = console(disk, "--busy-wait", "0.5")
+    child.send(f': W S" written while busy" {BLOCK} BLOCK SWAP CMOVE UPDATE ; '
+               ": SPIN BEGIN AGAIN ; W SPIN\r")
+    child.send("BYE\r")
+    child.expect_exact("The FORTH was busy for 0.5 s: ^C stopped the running word so "
+                       "that FLUSH could run.")
+    child.expect(FLUSHED)
+    child.expect(pexpect.EOF)
+    child.close()
+    assert child.exitstatus == 0
+    assert block_text(disk, BLOCK).startswith(b"written while busy")
+
+
+def test_a_flush_that_fails_names_the_blocks_not_written(tmp_path):
+    """An fsync that fails (LD_PRELOAD) makes the write a drive error (rl_durable.c)."""
+    lib = failing_fsync_library(tmp_path)
+    disk = tmp_path / "work.dsk"
+    shutil.copyfile(PRISTINE, disk)
+    child = console(disk, env={**os.environ, "LD_PRELOAD": str(lib)})
+    write_block_word(child, "never written")
+    child.send("BYE\r")
+    child.expect(r"FLUSH failed \(Error: block write error: FLUSH\)\.\r+\n")
+    child.expect_exact(f"[console] NOT SAVED: block(s) {BLOCK}: UPDATEd, and FLUSH did not "
+                       "complete their write; the changes may be lost.")
+    child.expect(r"Disk .* detached\.\r+\n\[console\] Bye\.")
+    child.expect(pexpect.EOF)
+    child.close()
+    assert child.exitstatus == 1
 
 
 def test_missing_disk_is_a_clear_error(tmp_path):
@@ -81,4 +152,41 @@ def test_missing_disk_is_a_clear_error(tmp_path):
     child.expect(pexpect.EOF)
     child.close()
     assert "none.dsk: no such disk image" in child.before
+    assert child.exitstatus == 1
+
+
+def test_a_simulator_that_dies_is_reported_with_what_it_cost(tmp_path):
+    """SIMH's `!` runs a shell command: killing SIMH from it stands for a crash."""
+    disk = tmp_path / "work.dsk"
+    shutil.copyfile(PRISTINE, disk)
+    child = console(disk)
+    write_block_word(child, "lost in the crash")
+    child.send("\x05")
+    child.expect("sim> ")
+    child.send("! kill -KILL $PPID\r")
+    child.expect_exact("[console] the simulator exited on its own: blocks UPDATEd since "
+                       "the last FLUSH, if any, were not written to")
+    child.expect(pexpect.EOF)
+    child.close()
+    assert child.exitstatus == 1
+
+
+def test_bye_after_the_disk_was_detached_says_so_and_names_the_lost_block(tmp_path):
+    disk = tmp_path / "work.dsk"
+    shutil.copyfile(PRISTINE, disk)
+    child = console(disk)
+    write_block_word(child, "no disk to write to")
+    child.send("\x05")
+    child.expect("sim> ")
+    child.send("detach rl0\r")
+    child.expect("sim> ")
+    child.send("cont\r")
+    assert probe_prompt(child) == 0
+    child.send("BYE\r")
+    child.expect(r"RL0 block 100 write not ready: .*not-ready")
+    child.expect(r"FLUSH failed \(Error: block write error: FLUSH\)\.\r+\n")
+    child.expect_exact(f"[console] NOT SAVED: block(s) {BLOCK}: UPDATEd")
+    child.expect_exact("not detached: it was not attached (a DETACH at sim>")
+    child.expect(pexpect.EOF)
+    child.close()
     assert child.exitstatus == 1

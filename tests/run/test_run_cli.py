@@ -5,6 +5,8 @@ import sys
 
 import pytest
 
+from harness.script import MAX_LINE
+from harness.scripted_machine import read_kernel_map
 from tests.run.common import PRISTINE, ROOT, needs_build
 
 pytestmark = needs_build
@@ -57,6 +59,56 @@ def test_a_line_that_never_finishes_is_stopped_in_simulated_time(tmp_path):
     r = harness("run", script, "--line-limit", "0.5")
     assert r.returncode == 1
     assert f"{script}:2: the simulator stopped: no prompt within 0.5 simulated seconds" in r.stderr
+
+
+RUNAWAY = ': LOOPY ( -- ) CR ." Error: made up" CR BEGIN AGAIN ;\nLOOPY\n2 3 + .\n'
+LIMIT_HIT = ("{script}:2: the simulator stopped: no prompt within 0.5 simulated seconds "
+             "(the line is still running); it had printed Error: made up")
+
+
+def test_a_line_that_prints_an_error_and_runs_on_has_hit_the_line_limit(tmp_path):
+    script = tmp_path / "runaway.script"
+    script.write_text(RUNAWAY)
+    r = harness("run", script, "--line-limit", "0.5")
+    assert r.returncode == 1
+    assert r.stderr.startswith(LIMIT_HIT.format(script=script) + " (in: LOOPY)\n"), r.stderr
+    assert "2 3 + ." not in (tmp_path / "runaway.transcript").read_text()
+
+
+def test_keep_going_stops_a_runaway_line_with_ctrl_c_and_goes_on(tmp_path):
+    script = tmp_path / "runaway.script"
+    script.write_text(RUNAWAY)
+    r = harness("run", script, "--line-limit", "0.5", "--keep-going")
+    assert r.returncode == 1
+    assert r.stderr.startswith(LIMIT_HIT.format(script=script)
+                               + "; ^C typed, the run goes on (in: LOOPY)\n"), r.stderr
+    assert "3 of 3 steps run" in r.stdout
+    assert (tmp_path / "runaway.transcript").read_text().endswith(
+        "Error: interrupted by ^C: LOOPY\n2 3 + . 5  ok\n")
+
+
+def test_keep_going_ends_when_not_even_ctrl_c_brings_the_prompt_back(tmp_path):
+    """At processor priority 7 the DL11's receive interrupt (^C) is masked."""
+    script = tmp_path / "deaf.script"
+    script.write_text("7 PRIORITY! BEGIN AGAIN\n1 .\n")
+    r = harness("run", script, "--line-limit", "0.5", "--keep-going")
+    assert r.returncode == 1
+    assert "^C typed, and still no prompt within 0.5 simulated seconds" in r.stderr
+    assert "1 of 2 steps run" in r.stdout
+
+
+def test_the_longest_script_line_is_what_the_kernels_accept_takes(tmp_path):
+    """script.MAX_LINE, the docs' 255 and the kernel's TIB-SIZE - 1 agree, and a
+    line that long is typed and answered whole."""
+    assert MAX_LINE == read_kernel_map()["TIB-SIZE"] - 1 == 255
+    assert "at most 255 characters" in (ROOT / "docs" / "console.md").read_text()
+    line = "( " + "x" * (MAX_LINE - len("(  ) 7 .")) + " ) 7 ."
+    assert len(line) == 255
+    script = tmp_path / "long.script"
+    script.write_text(line + "\n")
+    r = harness("run", script)
+    assert r.returncode == 0, r.stderr
+    assert (tmp_path / "long.transcript").read_text().endswith(" 7  ok\n")
 
 
 def test_a_simh_command_that_simh_refuses_fails_its_line(tmp_path):

@@ -18,7 +18,7 @@ def test_lines_comments_and_directives():
     ("#wait nan", "s:1: #wait takes simulated seconds"),
     ("#simh go", "s:1: #simh takes one of show, set, examine, deposit"),
     ("#simh s cpu", "s:1: #simh takes one of"),
-    ("X" * 128, "s:1: line of 128 characters"),
+    ("X" * 256, "s:1: line of 256 characters; the FORTH takes at most 255"),
     ("1 \x07 .", "s:1: character '\\x07' cannot be typed"),
 ])
 def test_bad_lines_name_file_and_line(line, message):

@@ -62,15 +62,15 @@ socket.onmessage = (event) => {
     Object.assign(lab, { stops: m.stops, perAxis: m.per_axis, single: m.single, status: m.status });
     term.write(m.con);
     buildTable();
-  } else if (m.t === "ended") showEnded(m.flushed);
+  } else if (m.t === "ended") showEnded(m.safe);
 };
 socket.onclose = () => { if (!lab.ended) showEnded(null, "the lab server went away"); };
 
-function showEnded(flushed, why) {
+function showEnded(safe, why) {
   lab.ended = true;
   const box = document.getElementById("ended");
-  box.textContent = why || (flushed ? "Session ended: blocks flushed, disk detached. Bye."
-                                    : "Session ended.");
+  box.textContent = why || (safe ? "Session ended: every block written, disk detached. Bye."
+                                 : "Session ended: see the console for what was not saved.");
   box.hidden = false;
   setBadge("ended", "ENDED");
 }
