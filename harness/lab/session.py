@@ -3,8 +3,9 @@
 The machine boots as in `make run`, with the LAB device (pdp11-devices/lab.c)
 attached to a FIFO in a private temporary directory; a second FIFO carries the
 lab's commands (speed, pause, step, watch, dump) to the device. Everything is
-read on the asyncio loop, so the simulator never waits long for a reader. Leaving (BYE, ^D, or close()) is the
-console's: FLUSH, detach, quit (harness/console_session.py).
+read on the asyncio loop, so the simulator never waits long for a reader.
+Leaving (BYE, ^D, ^C or QUIT at sim>, or close()) is the console's: FLUSH, check,
+detach, quit (harness/console_session.py).
 """
 import asyncio
 import os
@@ -14,14 +15,12 @@ from pathlib import Path
 
 import pexpect
 
-from harness.console_session import leave, say
+from harness import simh
+from harness.console_session import KERNEL, leave, say
 from harness.console_watch import Leave, LineWatcher
 from harness.lab.feed import Lines, lab_row
-from harness import simh
-from harness.simh import MACHINE_INI
+from harness.simh import MACHINE_INI, ROOT
 
-ROOT = Path(__file__).resolve().parents[2]
-KERNEL = ROOT / "build" / "kernel.lda"
 SPEEDS = {"real": 1, "x10": 10, "full": 0}
 STOPS = re.compile(rb"^\s+([XYZT])\s+\S+\s+\S+\s+\S+\s+\S+\s+(-?[\d.]+)\s+(-?[\d.]+)\s+\S+\s*$",
                    re.M)
@@ -107,7 +106,9 @@ class Simulator:
             if not data:
                 self._unwatch(name)
                 if name == "pty" and not self.leaving:
-                    self.callbacks[2](None)           # the simulator exited by itself
+                    self.leaving = True               # the simulator exited by itself
+                    self._release()
+                    self.callbacks[2](None)
                 return
             handle(data)
         loop.add_reader(fd, readable)
@@ -154,12 +155,15 @@ class Simulator:
         try:
             safe = await asyncio.to_thread(self._leave, how, echo)
         finally:
-            for name in list(self.fds):
-                self._unwatch(name)
-            os.close(self.ctl)
-            self.child.close(force=True)
-            self.tmp.cleanup()
+            self._release()
         self.callbacks[2](safe)
+
+    def _release(self):
+        for name in list(self.fds):
+            self._unwatch(name)
+        os.close(self.ctl)
+        self.child.close(force=True)
+        self.tmp.cleanup()
 
     def _leave(self, how, echo):
         if not self.child.isalive():
