@@ -2,7 +2,8 @@
 
 The user types to the FORTH (or, after ^E, to SIMH's sim> prompt) directly;
 the harness watches the keystrokes only to catch the ways out
-(harness/console_watch.py): BYE, ^D, and at sim> ^C or SIMH's QUIT/EXIT/BYE,
+(harness/console_watch.py): BYE, ^D, the halt of the FORTH's BYE word, and at sim>
+^C or SIMH's QUIT/EXIT/BYE,
 which would otherwise end the simulator with the FORTH's UPDATEd blocks unwritten.
 Then it erases the typed line (^U, which both the FORTH and SIMH's prompt take as
 "kill line"), brings the FORTH back to its prompt if SIMH had it stopped, has it
@@ -96,6 +97,15 @@ class Departure:
         lines.append(f"Disk {self.disk} detached." if self.detach == "ok" else
                      f"Disk {self.disk} not detached: {self.detach}.")
         return self.notes + lines
+
+
+def bye_halt(kernel=KERNEL):
+    """What SIMH prints when the kernel's BYE word halts at (BYE), or None."""
+    try:
+        bye = read_kernel_map(Path(kernel).with_suffix(".map")).get("(BYE)")
+    except ScriptError:
+        return None
+    return None if bye is None else b"HALT instruction, PC: %06o" % (bye + 2)
 
 
 def _to_forth_prompt(child, gone, busy_wait):
@@ -195,7 +205,7 @@ def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BU
         child = pexpect.spawn(str(simulator), [str(ini)], timeout=None,
                               dimensions=(size.lines, size.columns))
         child.delaybeforesend = None
-        watcher = LineWatcher()
+        watcher = LineWatcher(bye_halt(kernel))
         try:
             child.interact(escape_character=None, input_filter=watcher.feed,
                            output_filter=watcher.output)

@@ -7,6 +7,8 @@ buffers are written before the simulator ends:
   BYE on a line of its own, or ^D            anywhere
   ^C                                         at sim> (SIMH would die of the SIGINT)
   a SIMH command that exits: QUIT, EXIT, BYE  at sim>, abbreviations included
+  the FORTH's BYE word run within a line   seen in the output: SIMH's report of
+                                             the HALT at (BYE) (halt_marker)
 
 Each raises Leave before the simulator sees it. Whether SIMH has the prompt is
 followed from the output (a chunk ending in "sim> ") and from the commands typed
@@ -32,16 +34,24 @@ class Leave(Exception):
 class LineWatcher:
     """Follows what the user types, line by line, and whether SIMH is reading it."""
 
-    def __init__(self):
+    def __init__(self, halt_marker=None):
+        """halt_marker: what SIMH prints when the FORTH's BYE word halts
+        (b"HALT instruction, PC: <(BYE)+2>"), None when the kernel has no BYE."""
         self.line = bytearray()
         self.at_simh = False
+        self.halt_marker = halt_marker
         self._tail = b""
+        self._keep = max(len(SIM_PROMPT), 2 * len(halt_marker or b""))
 
     def output(self, data):
-        """Follow the simulator's output (interact's output_filter); unchanged."""
-        self._tail = (self._tail + data)[-len(SIM_PROMPT):]
-        if self._tail == SIM_PROMPT:
+        """Follow the simulator's output (interact's output_filter); unchanged,
+        or Leave when it reports the halt of the BYE word."""
+        self._tail = (self._tail + data)[-self._keep:]
+        if self._tail.endswith(SIM_PROMPT):
             self.at_simh = True
+        if self.halt_marker and self.halt_marker in self._tail:
+            self._tail = b""
+            raise Leave("the BYE word")
         return data
 
     def feed(self, data):

@@ -9,6 +9,7 @@ trace), with a FORTH-line interface:
         r.send("Set.Up.Robot")
         r.idle(2.0)                         # two simulated seconds pass, FORTH idle
         r.plant()                           # SHOW PLANT, parsed per axis
+        r.gripper()                         # its gripper line, parsed
 """
 import re
 
@@ -37,6 +38,20 @@ def parse_show_plant(text):
     if set(axes) != set(AXES):
         raise ValueError(f"SHOW PLANT output not understood: {text!r}")
     return axes
+
+
+def parse_show_gripper(text):
+    """SHOW PLANT's (last) gripper line -> {opening (in), steps, object (in),
+    contact, pulses, missed, blocked, part}: part is None, or (x, y, z) in
+    counts where a placed part is."""
+    lines = [ln for ln in text.splitlines() if ln.strip().startswith("gripper ")]
+    if not lines:
+        raise ValueError(f"no gripper line in SHOW PLANT's output: {text[-200:]!r}")
+    line, _, part = lines[-1].partition(", part at ")
+    f = line.replace(",", " ").replace("(", " ").split()
+    return dict(opening=float(f[2]), steps=int(f[4]), object=float(f[7]), contact=int(f[10]),
+                pulses=int(f[12]), missed=int(f[14]), blocked=int(f[16]),
+                part=tuple(float(v) for v in part.split()[:3]) if part else None)
 
 
 class Robot(ScriptedMachine):
@@ -103,6 +118,9 @@ class Robot(ScriptedMachine):
 
     def plant(self):
         return parse_show_plant(self.simh("show plant"))
+
+    def gripper(self):
+        return parse_show_gripper(self.simh("show plant"))
 
     def examine(self, addr):
         """A memory word (unsigned) read through SIMH."""

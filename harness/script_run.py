@@ -85,6 +85,12 @@ def run_steps(machine, steps, keep_going=False):
                 break
         answer = machine.wait(step.seconds) if step.kind == "wait" else machine.line(step.text)
         transcript.console(answer.output)
+        if machine.left_with_bye(answer):       # BYE ends the session, as at the console
+            later = len(steps) - result.steps_run
+            if later:
+                result.failures.append(Failure(step.lineno, step.text,
+                                               f"BYE ended the session; {later} later steps not run"))
+            break
         message = _failure(answer)
         if not message:
             continue

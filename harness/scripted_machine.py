@@ -126,6 +126,11 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         self.trace = trace
         self.boot_output = self._run("go", "boot").output
 
+    def left_with_bye(self, answer):
+        """The line ran the FORTH's BYE: FLUSH, then the HALT at (BYE)."""
+        bye = self.sym.get("(BYE)")
+        return bye is not None and answer.stopped.startswith(f"HALT instruction, PC: {bye + 2:06o}")
+
     # ---- SIMH round trips -------------------------------------------------------------
     def _expect_prompt(self, what):
         i = self.child.expect_exact([PROMPT, pexpect.EOF, pexpect.TIMEOUT])

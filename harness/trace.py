@@ -4,11 +4,15 @@ Columns: time_s,axis,dac,vcmd,vel,pos,counter: simulated seconds, axis letter
 X/Y/Z/T, DAC code (0..4095, 2048 = 0 V), the plant's commanded velocity and its
 actual velocity in counts/s, position in counts, and the axis counter as a
 signed 16-bit number. Rows are in time order; each sample time gives a row per
-axis, and every DAC write adds a row for the axis written.
+axis, and every DAC write adds a row for the axis written. Traces from this
+build carry three more columns, the gripper's state on every row whatever its
+axis: grip (opening, inches), contact (the finger switch, 0/1), missed (step
+pulses missed so far); traces without them are read too.
 
     trace = read("run.csv")          # TraceError: the file is not a trace
     x = trace.axis("X")              # AxisSeries of numpy arrays
     x.time, x.dac, x.vcmd, x.vel, x.pos, x.counter
+    g = trace.gripper                # GripperSeries, or None for older traces
 
 Pure logic apart from opening the file; no plotting here (harness/plots.py).
 """
@@ -20,6 +24,8 @@ from pathlib import Path
 import numpy as np
 
 HEADER = ("time_s", "axis", "dac", "vcmd", "vel", "pos", "counter")
+GRIPPER_COLUMNS = ("grip", "contact", "missed")
+HEADERS = (HEADER + GRIPPER_COLUMNS, HEADER)     # this build's, and older traces
 AXES = "XYZT"
 DAC_ZERO = 2048          # offset binary: the code for 0 V
 
@@ -56,9 +62,19 @@ class AxisSeries:
 
 
 @dataclass(frozen=True)
+class GripperSeries:
+    """The gripper's state, one entry per distinct row time."""
+    time: np.ndarray      # s
+    opening: np.ndarray   # inches between the fingers
+    contact: np.ndarray   # finger contact switch, 0/1
+    missed: np.ndarray    # step pulses missed so far
+
+
+@dataclass(frozen=True)
 class Trace:
     name: str
     series: dict          # axis letter -> AxisSeries (axes with rows only)
+    gripper: GripperSeries = None   # None: a trace without the gripper columns
 
     @property
     def axes(self):
@@ -97,12 +113,16 @@ _COLUMNS = (  # column -> (type, range check, what it must be)
     ("vel", float, lambda v: True, "a number (counts/s)"),
     ("pos", float, lambda v: True, "a number (counts)"),
     ("counter", int, lambda v: -32768 <= v <= 32767, "a signed 16-bit count"),
+    ("grip", float, lambda v: 0 <= v <= 2, "an opening in inches, 0..2"),
+    ("contact", int, lambda v: v in (0, 1), "0 or 1"),
+    ("missed", int, lambda v: v >= 0, "a count >= 0"),
 )
 
 
 def parse_rows(lines, name="trace"):
     """Check the header and every row of `lines` (an iterable of text lines);
-    returns a list of tuples (time, axis, dac, vcmd, vel, pos, counter)."""
+    returns a list of tuples (time, axis, dac, vcmd, vel, pos, counter[, grip,
+    contact, missed])."""
     reader = csv.reader(lines)
     try:
         header = next(reader, None)
@@ -110,18 +130,19 @@ def parse_rows(lines, name="trace"):
         raise TraceError(f"{name}: not a plant trace: {err}") from err
     if header is None:
         raise TraceError(f"{name}: empty file, not a plant trace")
-    if tuple(h.strip() for h in header) != HEADER:
+    header = tuple(h.strip() for h in header)
+    if header not in HEADERS:
         raise TraceError(f"{name}: not a plant trace: the first line is "
-                         f"{','.join(header)[:80]!r}, expected {','.join(HEADER)!r}")
+                         f"{','.join(header)[:80]!r}, expected {','.join(HEADERS[0])!r}")
     rows, last_time = [], 0.0
     try:
         for fields in reader:
             line = reader.line_num
             if not fields:
                 continue
-            if len(fields) != len(HEADER):
+            if len(fields) != len(header):
                 raise TraceError(f"{name} line {line}: {len(fields)} fields, "
-                                 f"expected {len(HEADER)}")
+                                 f"expected {len(header)}")
             row = []
             for (column, kind, check, what), text in zip(_COLUMNS, fields):
                 value = _field(kind, text.strip(), check)
@@ -152,7 +173,20 @@ def from_rows(rows, name="trace"):
                 letter, np.array(cols[0]), np.array(cols[2], dtype=int),
                 np.array(cols[3]), np.array(cols[4]), np.array(cols[5]),
                 np.array(cols[6], dtype=int))
-    return Trace(name, series)
+    return Trace(name, series, _gripper(rows))
+
+
+def _gripper(rows):
+    if not rows or len(rows[0]) <= len(HEADER):
+        return None
+    times, keep = set(), []
+    for r in rows:
+        if r[0] not in times:
+            times.add(r[0])
+            keep.append(r)
+    cols = list(zip(*keep))
+    return GripperSeries(np.array(cols[0]), np.array(cols[7]), np.array(cols[8], dtype=int),
+                         np.array(cols[9], dtype=int))
 
 
 def read(path):

@@ -1,5 +1,6 @@
 # mk/devices.mk: build/pdp11, SIMH's PDP-11 simulator with the robot's devices
-# (pdp11-devices/), and build/plant_test, the plant physics tested alone.
+# (pdp11-devices/), and build/plant_test and build/gripper_test, the plant's
+# axis physics and the gripper's mechanics tested alone.
 #
 # SIMH's files are compiled unpatched. The stock objects are shared with
 # build/pdp11-stock, except pdp11_sys.c, compiled again with its device table
@@ -8,7 +9,7 @@
 ROBOT_OBJ  := $(BUILD)/obj/robot
 DEV_DIR    := pdp11-devices
 DEV_HDRS   := $(wildcard $(DEV_DIR)/*.h)
-DEV_GLUE   := $(filter-out $(DEV_DIR)/plant_test.c,$(wildcard $(DEV_DIR)/*.c))
+DEV_GLUE   := $(filter-out $(DEV_DIR)/%_test.c,$(wildcard $(DEV_DIR)/*.c))
 DEV_OBJS   := $(patsubst $(DEV_DIR)/%.c,$(ROBOT_OBJ)/%.o,$(DEV_GLUE))
 ROBOT_SYS  := $(ROBOT_OBJ)/pdp11_sys_stock.o
 ROBOT_SIMH_OBJS := $(filter-out $(STOCK_OBJ)/PDP11/pdp11_sys.o,$(STOCK_OBJS)) $(ROBOT_SYS)
@@ -20,7 +21,8 @@ $(ROBOT_SYS): $(SIMH_STAMP)
 	@mkdir -p $(dir $@)
 	@$(CC) $(SIMH_CFLAGS) -Dsim_devices=stock_sim_devices -c $(SIMH_SRC)/PDP11/pdp11_sys.c -o $@
 
-$(ROBOT_OBJ)/plant.o: $(DEV_DIR)/plant.c $(DEV_DIR)/plant.h
+# the pure mechanics (no SIMH types): strict flags, tested alone
+$(ROBOT_OBJ)/plant.o $(ROBOT_OBJ)/gripper.o: $(ROBOT_OBJ)/%.o: $(DEV_DIR)/%.c $(DEV_DIR)/%.h
 	@mkdir -p $(dir $@)
 	@$(CC) $(PLANT_CFLAGS) -c $< -o $@
 
@@ -35,8 +37,11 @@ $(BUILD)/pdp11: $(ROBOT_SIMH_OBJS) $(DEV_OBJS)
 $(BUILD)/plant_test: $(DEV_DIR)/plant_test.c $(ROBOT_OBJ)/plant.o
 	@$(CC) $(PLANT_CFLAGS) -o $@ $^ -lm
 
+$(BUILD)/gripper_test: $(DEV_DIR)/gripper_test.c $(ROBOT_OBJ)/gripper.o
+	@$(CC) $(PLANT_CFLAGS) -o $@ $^ -lm
+
 # pdp11-stock too: the reference the benchmark and tests/test_simh_stock.py use.
-ALL_PRODUCTS += $(BUILD)/pdp11 $(BUILD)/plant_test $(BUILD)/pdp11-stock
+ALL_PRODUCTS += $(BUILD)/pdp11 $(BUILD)/plant_test $(BUILD)/gripper_test $(BUILD)/pdp11-stock
 
 bench-devices: $(BUILD)/pdp11 $(BUILD)/pdp11-stock venv
 	@$(PY) harness/bench_devices.py

@@ -11,6 +11,9 @@
    167772 OUTBUF  16-bit read/write latch; bits 3:0 are the four counters' run
                 lines (bit n, axis n): 0 clears the counter and holds it at 0,
                 1 lets it count
+                bit 4  gripper STEP: a 0-to-1 edge asks the stepper for one step
+                bit 5  gripper DIR: 1 = close the fingers, 0 = open them
+                (the project's continuation, gripper.h; bits 15:6 drive nothing)
    167774 INBUF   read-only: the selected axis counter, 16-bit two's
                 complement, wrapping modulo 65536; writes are ignored
    Byte writes change one byte of a register (CSR: only its writable bits).
@@ -18,9 +21,10 @@
 
    Interrupts: vector 300 (A) and 304 (B), BR4. A request is raised when INT
    ENB x and REQ x become both 1 and withdrawn when either drops. The counter
-   multiplexer drives neither REQ line, so a running program never sees one;
-   `SET DRV11 REQA=1` (REQB) drives the line from the console, standing for a
-   user device, which is how the interrupt logic is tested. */
+   multiplexer drives neither REQ line. REQ B is 1 while the gripper's finger
+   contact switch is closed (fingers on an object), or-ed with what the
+   console set. `SET DRV11 REQA=1` (REQB) drives the line from the console,
+   standing for a user device, which is how the interrupt logic is tested. */
 #include "robot.h"
 
 extern int32 int_req[IPL_HLVL];
@@ -42,7 +46,8 @@ extern int32 int_req[IPL_HLVL];
 #define CSR_RW     (CSR_SEL | CSR_IEB | CSR_IEA)
 
 static int32 drv_csr;                    /* writable bits */
-static int32 drv_req;                    /* REQ A / REQ B lines, in CSR positions */
+static int32 drv_req;                    /* REQ A / REQ B set from the console, in CSR positions */
+static int drv_up_a, drv_up_b;           /* request conditions at the last update */
 static int32 drv_outbuf;
 
 static t_stat drv_rd (int32 *data, int32 PA, int32 access);
@@ -85,23 +90,34 @@ DEVICE drv_dev = {
     &drv_dib, DEV_UBUS | DEV_QBUS
 };
 
-/* Request x is up while INT ENB x and REQ x are; raise only on the rising edge. */
-static void drv_update_ints (int32 old_csr, int32 old_req)
+static int32 drv_lines (void)            /* REQ A and REQ B as the CSR shows them */
 {
-    int was_a = (old_csr & CSR_IEA) && (old_req & CSR_REQA);
-    int was_b = (old_csr & CSR_IEB) && (old_req & CSR_REQB);
-    int is_a = (drv_csr & CSR_IEA) && (drv_req & CSR_REQA);
-    int is_b = (drv_csr & CSR_IEB) && (drv_req & CSR_REQB);
-    if (is_a && !was_a) SET_INT (DRVA);
+    return drv_req | (plant_dev_gripper_contact () ? CSR_REQB : 0);
+}
+
+/* Request x is up while INT ENB x and REQ x are; raise only on the rising edge. */
+static void drv_update_ints (void)
+{
+    int32 lines = drv_lines ();
+    int is_a = (drv_csr & CSR_IEA) && (lines & CSR_REQA);
+    int is_b = (drv_csr & CSR_IEB) && (lines & CSR_REQB);
+    if (is_a && !drv_up_a) SET_INT (DRVA);
     if (!is_a) CLR_INT (DRVA);
-    if (is_b && !was_b) SET_INT (DRVB);
+    if (is_b && !drv_up_b) SET_INT (DRVB);
     if (!is_b) CLR_INT (DRVB);
+    drv_up_a = is_a;
+    drv_up_b = is_b;
+}
+
+void drv11_lines_changed (void)
+{
+    drv_update_ints ();
 }
 
 static t_stat drv_rd (int32 *data, int32 PA, int32 access)
 {
     switch ((PA >> 1) & 03) {
-    case 0: *data = drv_csr | drv_req; break;
+    case 0: *data = drv_csr | drv_lines (); break;
     case 1: *data = drv_outbuf; break;
     case 2: *data = plant_dev_counter (drv_csr & CSR_SEL); break;
     default: return SCPE_NXM;
@@ -111,15 +127,16 @@ static t_stat drv_rd (int32 *data, int32 PA, int32 access)
 
 static t_stat drv_wr (int32 data, int32 PA, int32 access)
 {
-    int32 old = drv_csr;
     switch ((PA >> 1) & 03) {
     case 0:
         drv_csr = MERGE_BYTE (drv_csr, data, PA, access) & CSR_RW;
-        drv_update_ints (old, drv_req);
+        drv_update_ints ();
         break;
     case 1:
         drv_outbuf = MERGE_BYTE (drv_outbuf, data, PA, access) & 0177777;
         plant_dev_run_lines (drv_outbuf & 017);
+        plant_dev_gripper_lines ((drv_outbuf >> 4) & 1, (drv_outbuf >> 5) & 1);
+        drv_update_ints ();                      /* a step may close the contact */
         break;
     case 2:                                      /* INBUF is read-only */
         break;
@@ -133,29 +150,30 @@ static t_stat drv_reset (DEVICE *dptr)
 {
     drv_csr = 0;
     drv_outbuf = 0;
+    drv_up_a = drv_up_b = 0;
     CLR_INT (DRVA);
     CLR_INT (DRVB);
     plant_dev_run_lines (0);
+    plant_dev_gripper_lines (0, 0);
     return SCPE_OK;
 }
 
 static t_stat drv_set_req (UNIT *uptr, int32 bit, char *cptr, void *desc)
 {
-    int32 old = drv_req;
     if (cptr == NULL || (strcmp (cptr, "0") != 0 && strcmp (cptr, "1") != 0)) {
         printf ("REQA and REQB take 0 or 1\n");
         return SCPE_ARG;
     }
     drv_req = (*cptr == '1') ? (drv_req | bit) : (drv_req & ~bit);
-    drv_update_ints (drv_csr, old);
+    drv_update_ints ();
     return SCPE_OK;
 }
 
 static t_stat drv_show_state (FILE *st, UNIT *uptr, int32 val, void *desc)
 {
     fprintf (st, "CSR=%06o (select %c, IEA=%d IEB=%d REQA=%d REQB=%d), OUTBUF=%06o",
-             drv_csr | drv_req, plant_axis_names[drv_csr & CSR_SEL],
+             drv_csr | drv_lines (), plant_axis_names[drv_csr & CSR_SEL],
              (drv_csr & CSR_IEA) != 0, (drv_csr & CSR_IEB) != 0,
-             (drv_req & CSR_REQA) != 0, (drv_req & CSR_REQB) != 0, drv_outbuf);
+             (drv_lines () & CSR_REQA) != 0, (drv_lines () & CSR_REQB) != 0, drv_outbuf);
     return SCPE_OK;
 }

@@ -1,6 +1,8 @@
-/* plant_dev.c: SIMH glue for the four-axis plant (SIMH device PLANT). The
-   physics is plant.c; this file only connects it to simulated time, the bus
-   devices (aav11.c, drv11.c), SET/SHOW and the trace file. No bus registers.
+/* plant_dev.c: SIMH glue for the four-axis plant and the gripper (SIMH
+   device PLANT). The physics is plant.c and gripper.c; this file only
+   connects them to simulated time, the bus devices (aav11.c, drv11.c: the
+   gripper's STEP and DIR lines are DRV11 OUTBUF bits 4 and 5, its contact
+   switch is REQ B), SET/SHOW and the trace file. No bus registers.
 
    SET (one axis selected by its letter, then any of its parameters):
      SET PLANT X TAU=20             SET PLANT Z KV=19.53,OFFSET=45
@@ -11,16 +13,26 @@
      device-wide: SET PLANT SEED=n (random walk seed, default 1983),
      SET PLANT SAMPLE=n (trace samples per simulated second, 0..1000,
      default 60; 0 = rows at DAC writes only)
+     the gripper (the project's continuation, docs/continuation.md):
+     SET PLANT GRIPPER OBJECT=1.0   (an object that wide between the fingers,
+     inches; 0 = none; refused while the fingers are closer than that),
+     PULLOUT=300 (steps/s the motor follows), OPENING=2 (inches, 0..2);
+     PARTX=, PARTY=, PARTZ= (counts, as the counters read) make the object a
+     part at that place, between the fingers only when the hand is there
+     and carried while gripped (gripper.h); OBJECT=0 removes it
    A rejected value (non-number, out of range, no axis selected) prints why,
    returns a SIMH error and leaves that parameter as it was; modifiers are
    applied left to right. The selection lasts until the end of the command.
    SHOW PLANT: per axis position (counts and inches or degrees), velocity,
    DAC code, commanded velocity, offset, end stop, run line, counter, then
-   the parameters.
+   the parameters, then a line for the gripper (opening, object, contact,
+   step pulses requested, missed, blocked, pull-out rate, its two lines,
+   and where a placed part is).
    ATTACH PLANT file.csv: writes the trace (truncating the file), DETACH
    PLANT closes it. Columns: time_s,axis,dac,vcmd,vel,pos,counter (simulated
    seconds, X/Y/Z/T, code, counts/s, counts/s, counts, counter as a signed
-   16-bit number). A row for all four axes at every sample (SAMPLE per second,
+   16-bit number), then the gripper's state on every row, whatever the axis:
+   grip (opening, inches), contact (0/1), missed (step pulses missed so far). A row for all four axes at every sample (SAMPLE per second,
    at exact instruction counts from the ATTACH) and a row for the axis written
    at every DAC write. Same program, same trace, byte for byte. */
 #include "robot.h"
@@ -33,7 +45,9 @@
 #define SAMPLE_MAX     1000
 
 plant robot_plant;
-static int sel_axis = -1;               /* axis named earlier in this SET command */
+gripper robot_gripper;
+#define SEL_GRIPPER PLANT_AXES
+static int sel_axis = -1;               /* axis (or SEL_GRIPPER) named earlier in this SET command */
 static int32 sample_hz = DEFAULT_SAMPLE;
 static int32 sample_acc;
 
@@ -43,10 +57,16 @@ static t_stat plant_attach (UNIT *uptr, char *cptr);
 static t_stat plant_detach (UNIT *uptr);
 static t_stat plant_select (UNIT *uptr, int32 axis, char *cptr, void *desc);
 static t_stat plant_set (UNIT *uptr, int32 which, char *cptr, void *desc);
+static t_stat plant_set_gripper (UNIT *uptr, int32 which, char *cptr, void *desc);
 static t_stat plant_set_seed (UNIT *uptr, int32 val, char *cptr, void *desc);
 static t_stat plant_set_sample (UNIT *uptr, int32 val, char *cptr, void *desc);
 static t_stat plant_show_global (FILE *st, UNIT *uptr, int32 val, void *desc);
 static t_stat plant_show_axes (FILE *st, UNIT *uptr, int32 val, void *desc);
+
+enum { G_OBJECT, G_PULLOUT, G_OPENING, G_PARTX, G_PARTY, G_PARTZ };
+static const char *const gripper_param_names[] = {
+    "OBJECT", "PULLOUT", "OPENING", "PARTX", "PARTY", "PARTZ"
+};
 
 static UNIT plant_unit = { UDATA (&plant_svc, UNIT_ATTABLE, 0) };
 
@@ -59,6 +79,13 @@ static MTAB plant_mod[] = {
     { MTAB_XTD|MTAB_VDV, AXIS_T, NULL, "T", &plant_select, NULL, NULL },
     PARAM (P_KV), PARAM (P_TAU), PARAM (P_AMAX), PARAM (P_VMAX), PARAM (P_OFFSET),
     PARAM (P_PMIN), PARAM (P_PMAX), PARAM (P_WALK), PARAM (P_POS),
+    { MTAB_XTD|MTAB_VDV, SEL_GRIPPER, NULL, "GRIPPER", &plant_select, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, G_OBJECT, NULL, "OBJECT", &plant_set_gripper, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, G_PULLOUT, NULL, "PULLOUT", &plant_set_gripper, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, G_OPENING, NULL, "OPENING", &plant_set_gripper, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, G_PARTX, NULL, "PARTX", &plant_set_gripper, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, G_PARTY, NULL, "PARTY", &plant_set_gripper, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, G_PARTZ, NULL, "PARTZ", &plant_set_gripper, NULL, NULL },
     { MTAB_XTD|MTAB_VDV, 0, NULL, "SEED", &plant_set_seed, NULL, NULL },
     { MTAB_XTD|MTAB_VDV, 0, NULL, "SAMPLE", &plant_set_sample, NULL, NULL },
     { MTAB_XTD|MTAB_VDV, 0, "SETTINGS", NULL, NULL, &plant_show_global, NULL },
@@ -77,19 +104,33 @@ DEVICE plant_dev = {
 void plant_dev_init (void)
 {
     plant_init (&robot_plant, DEFAULT_SEED);
+    gripper_init (&robot_gripper);
+}
+
+/* The hand where the FORTH sees it: each axis's counter reading, unwrapped. */
+static void hand_position (double hand[3])
+{
+    for (int i = 0; i < 3; i++) {
+        const plant_axis *a = &robot_plant.ax[i];
+        hand[i] = a->run ? a->p - a->p0 : a->p;
+    }
 }
 
 void plant_dev_catch_up (void)
 {
+    double hand[3];
     plant_advance (&robot_plant, robot_time ());
+    hand_position (hand);
+    gripper_hand_at (&robot_gripper, hand);
 }
 
 static void trace_row (int axis)
 {
     const plant_axis *a = &robot_plant.ax[axis];
-    fprintf (plant_unit.fileref, "%.9f,%c,%d,%.3f,%.3f,%.3f,%d\n", robot_plant.now,
+    fprintf (plant_unit.fileref, "%.9f,%c,%d,%.3f,%.3f,%.3f,%d,%.2f,%d,%lu\n", robot_plant.now,
              plant_axis_names[axis], a->code, plant_vcmd (&robot_plant, axis), a->v, a->p,
-             (int) (int16) plant_counter (&robot_plant, axis));
+             (int) (int16) plant_counter (&robot_plant, axis), gripper_opening (&robot_gripper),
+             gripper_contact (&robot_gripper), robot_gripper.missed);
 }
 
 void plant_dev_dac (int axis, int code)
@@ -105,6 +146,17 @@ void plant_dev_run_lines (int lines)
     plant_dev_catch_up ();
     for (int i = 0; i < PLANT_AXES; i++)
         plant_set_run (&robot_plant, i, (lines >> i) & 1);
+}
+
+void plant_dev_gripper_lines (int step, int dir)
+{
+    plant_dev_catch_up ();
+    gripper_lines (&robot_gripper, robot_time (), step, dir);
+}
+
+int plant_dev_gripper_contact (void)
+{
+    return gripper_contact (&robot_gripper);
 }
 
 uint16 plant_dev_counter (int axis)
@@ -157,7 +209,7 @@ static t_stat plant_attach (UNIT *uptr, char *cptr)
         plant_detach (uptr);
     if ((r = robot_attach_text (uptr, cptr, "PLANT: cannot write the trace")) != SCPE_OK)
         return r;
-    fputs ("time_s,axis,dac,vcmd,vel,pos,counter\n", uptr->fileref);
+    fputs ("time_s,axis,dac,vcmd,vel,pos,counter,grip,contact,missed\n", uptr->fileref);
     plant_dev_catch_up ();
     schedule_sample ();
     return SCPE_OK;
@@ -183,7 +235,7 @@ static int parse_number (const char *s, double *x)
 static t_stat plant_select (UNIT *uptr, int32 axis, char *cptr, void *desc)
 {
     if (cptr) {
-        printf ("PLANT: an axis letter takes no value (SET PLANT X TAU=20)\n");
+        printf ("PLANT: an axis letter or GRIPPER takes no value (SET PLANT X TAU=20)\n");
         return SCPE_ARG;
     }
     sel_axis = axis;
@@ -194,6 +246,11 @@ static t_stat plant_set (UNIT *uptr, int32 which, char *cptr, void *desc)
 {
     double x;
     const char *why;
+    if (sel_axis == SEL_GRIPPER) {
+        printf ("PLANT: %s is an axis parameter; the gripper has OBJECT, PULLOUT and OPENING\n",
+                plant_param_names[which]);
+        return SCPE_ARG;
+    }
     if (sel_axis < 0) {
         printf ("PLANT: name the axis (X, Y, Z or T) before %s, e.g. SET PLANT X %s=...\n",
                 plant_param_names[which], plant_param_names[which]);
@@ -209,6 +266,36 @@ static t_stat plant_set (UNIT *uptr, int32 which, char *cptr, void *desc)
         printf ("PLANT %c: %s\n", plant_axis_names[sel_axis], why);
         return SCPE_ARG;
     }
+    return SCPE_OK;
+}
+
+static t_stat plant_set_gripper (UNIT *uptr, int32 which, char *cptr, void *desc)
+{
+    double x;
+    const char *why;
+    int contact = gripper_contact (&robot_gripper);
+    if (sel_axis != SEL_GRIPPER) {
+        printf ("PLANT: %s belongs to the gripper: SET PLANT GRIPPER %s=...\n",
+                gripper_param_names[which], gripper_param_names[which]);
+        return SCPE_ARG;
+    }
+    if (!parse_number (cptr, &x)) {
+        printf ("PLANT: %s needs a number, e.g. SET PLANT GRIPPER %s=1\n",
+                gripper_param_names[which], gripper_param_names[which]);
+        return SCPE_ARG;
+    }
+    plant_dev_catch_up ();
+    why = which == G_OBJECT ? gripper_set_object (&robot_gripper, x)
+        : which == G_PULLOUT ? gripper_set_pullout (&robot_gripper, x)
+        : which == G_OPENING ? gripper_set_opening (&robot_gripper, x)
+        : gripper_place_part (&robot_gripper, which - G_PARTX, x);
+    if (why != NULL) {
+        printf ("PLANT GRIPPER: %s\n", why);
+        return SCPE_ARG;
+    }
+    plant_dev_catch_up ();                      /* the part may be at the hand */
+    if (gripper_contact (&robot_gripper) != contact)
+        drv11_lines_changed ();                 /* the contact switch is REQ B */
     return SCPE_OK;
 }
 
@@ -267,5 +354,15 @@ static t_stat plant_show_axes (FILE *st, UNIT *uptr, int32 val, void *desc)
                  plant_get_param (&robot_plant, i, P_AMAX), plant_get_param (&robot_plant, i, P_VMAX),
                  plant_get_param (&robot_plant, i, P_PMIN), plant_get_param (&robot_plant, i, P_PMAX),
                  plant_get_param (&robot_plant, i, P_WALK));
+    fprintf (st, "\n  gripper  opening %.2f in (%d steps), object %.3f in, contact %d, "
+             "pulses %lu, missed %lu, blocked %lu, pullout %g steps/s, step %d dir %d",
+             gripper_opening (&robot_gripper), robot_gripper.steps, robot_gripper.object_in,
+             gripper_contact (&robot_gripper), robot_gripper.pulses, robot_gripper.missed,
+             robot_gripper.blocked, robot_gripper.pullout, robot_gripper.step_line,
+             robot_gripper.dir_line);
+    if (robot_gripper.part)
+        fprintf (st, ", part at %.0f %.0f %.0f%s", robot_gripper.part_at[0],
+                 robot_gripper.part_at[1], robot_gripper.part_at[2],
+                 gripper_contact (&robot_gripper) ? " (held)" : "");
     return SCPE_OK;
 }

@@ -5,6 +5,7 @@
 
 #include "pdp11_defs.h"
 #include "plant.h"
+#include "gripper.h"
 
 /* Time base (kw11l.c): simulated time = executed instructions / rate. */
 extern int32 robot_rate;                 /* instructions per simulated second */
@@ -18,6 +19,10 @@ void plant_dev_catch_up (void);                   /* integrate up to now */
 void plant_dev_dac (int axis, int code);          /* AAV11-A wrote a channel */
 void plant_dev_run_lines (int lines);             /* DRV11 OUTBUF bits 3:0 */
 uint16 plant_dev_counter (int axis);              /* DRV11 INBUF */
+extern gripper robot_gripper;
+void plant_dev_gripper_lines (int step, int dir);  /* DRV11 OUTBUF bits 4, 5 */
+int plant_dev_gripper_contact (void);             /* DRV11 REQ B */
+void drv11_lines_changed (void);                  /* REQ lines may have moved */
 void plant_dev_init (void);
 void plant_dev_rate_changed (int32 old_rate);                        /* power-up state */
 void plant_dev_command_done (void);               /* after each SCP command */

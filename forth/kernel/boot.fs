@@ -5,7 +5,7 @@
   CR UNUSED U. ." bytes free.  Disk: RL02 on the RLV12 at 174400, blocks 0-10239."
   CR ;
 : COLD  ( -- )
-  FORTH-BODY DUP CONTEXT ! CURRENT !  DECIMAL  0 HANDLER !  0 BLK !  0 STATE !
+  FORTH-BODY CURRENT !  ONLY ALSO  DECIMAL  0 HANDLER !  0 BLK !  0 STATE !
   ['] CODE-ERROR 'ON-ERROR !
   BANNER ."  ok" CR  QUIT ;
 
@@ -19,14 +19,14 @@ LABEL TRAPPED
   RP )+ TST,  TRAP-PC @# RP )+ MOV,  RP )+ TST,
   S S0 # MOV,  S -) -256 # MOV,  \ priority stays 7 until the report is out
   IP HERE 6 + # MOV,  NEXT,  ' THROW ,  END-CODE
-LABEL TICK  ( line clock, vector 100: nothing to do until a servo is installed )
-  RTI,  END-CODE
+LABEL TICK  ( line clock, vector 100, until a servo is installed: count ticks )
+  TICKS 2 + @# 1 # ADD,  TICKS @# ADC,  RTI,  END-CODE
 
 \ Machine entry (the start address in build/kernel.lda): stacks, console
 \ receive interrupt on, free space filled, priority 0, then the thread holding COLD.
 LABEL ENTRY
   340O # MTPS,  RP RP0 # MOV,  S S0 # MOV,
-  RXHEAD @# CLR,  RXTAIL @# CLR,  RXLOST @# CLR,  THROW-CELL @# ' THROW # MOV,
+  RXHEAD @# CLR,  RXTAIL @# CLR,  RXLOST @# CLR,  TICKS @# CLR,  TICKS 2 + @# CLR,  THROW-CELL @# ' THROW # MOV,
   177560O @# 100O # MOV,
   \ free dictionary space holds a reserved instruction (000010): a wild jump past
   \ HERE traps and is reported instead of running into HALT (zero) and stopping

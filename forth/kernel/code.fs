@@ -11,9 +11,9 @@ VARIABLE CODE-LFA  ( -- a ) \ header of that word: an error discards it whole
 : ?END-CODE  ( -- )  CODE-OPEN @ IF END-CODE THEN ;
 : ASSEMBLE  ( -- )  \ assembler first, operand slots clear, depth remembered
   ASSEMBLER-BODY CONTEXT !  TRUE CODE-OPEN !  ASSEMBLER ASM-START FORTH ;
-: CODE  ( "name" -- )  \ header whose code field is the machine code that follows
+: CODE  ( "name" -- )  \ TOOLS EXT: header whose code field is the machine code that follows
   ?END-CODE ALIGN HERE CODE-LFA !  PARSE-NAME HEADER, ASSEMBLE ;
-: ;CODE  ( colon-sys -- )  \ children run the code after it with W = body
+: ;CODE  ( colon-sys -- )  \ TOOLS EXT: children run the code after it with W = body
   ['] (DOES>) ,  5726O ,  4 ?PAIRS  REVEAL  POSTPONE [
   COLON-LFA @ CODE-LFA !  0 COLON-LFA !  ASSEMBLE ;
   IMMEDIATE COMPILE-ONLY

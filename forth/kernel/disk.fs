@@ -108,29 +108,29 @@ CREATE CUR-BLK  ( -- a ) -1 ,   \ the block UPDATE marks, -1 = none
    DUP >UPD @ IF DUP BUF-ADDR OVER >BLK @ RL-WRITE 0 OVER >UPD ! THEN DROP ;
 : FREE-BUF ( -- i ) \ the least recently used buffer, written back, unassigned
    BUF-MRU #BUFS 1- 2* + @ DUP WRITE-BACK -1 OVER >BLK ! ;
-: BUFFER ( blk -- addr ) \ assign a buffer to blk, contents undefined
+: BUFFER ( blk -- addr ) \ BLOCK: assign a buffer to blk, contents undefined
    ?BLOCK# DUP RESIDENT DUP 0< IF DROP FREE-BUF THEN
    OVER CUR-BLK ! TUCK >BLK ! DUP TOUCH BUF-ADDR ;
 : (BLOCK) ( blk -- addr ) \ BLOCK for SOURCE: leaves the current block alone
    ?BLOCK# BUF-MRU @ DUP >BLK @ 2 PICK = IF NIP BUF-ADDR EXIT THEN DROP
    DUP RESIDENT DUP 0< IF DROP FREE-BUF 2DUP BUF-ADDR SWAP RL-READ THEN
    TUCK >BLK ! DUP TOUCH BUF-ADDR ;   \ (the first line: the most recent, fast)
-: BLOCK ( blk -- addr ) \ the buffer holding blk, read if needed; UPDATE's block
+: BLOCK ( blk -- addr ) \ BLOCK: the buffer holding blk, read if needed; UPDATE's block
    DUP (BLOCK) SWAP CUR-BLK ! ;
-: UPDATE ( -- ) \ mark the block last given by BLOCK or BUFFER as changed
+: UPDATE ( -- ) \ BLOCK: mark the block last given by BLOCK or BUFFER as changed
    CUR-BLK @ DUP 0< 0= IF RESIDENT THEN DUP 0< ABORT" UPDATE: no current block"
    TRUE SWAP >UPD ! ;
-: SAVE-BUFFERS ( -- ) #BUFS 0 DO I WRITE-BACK LOOP ;
-: EMPTY-BUFFERS ( -- ) #BUFS 0 DO -1 I >BLK ! 0 I >UPD ! LOOP -1 CUR-BLK ! ;
-: FLUSH ( -- ) SAVE-BUFFERS EMPTY-BUFFERS ;
+: SAVE-BUFFERS ( -- ) #BUFS 0 DO I WRITE-BACK LOOP ;  \ BLOCK
+: EMPTY-BUFFERS ( -- ) #BUFS 0 DO -1 I >BLK ! 0 I >UPD ! LOOP -1 CUR-BLK ! ;  \ BLOCK EXT
+: FLUSH ( -- ) SAVE-BUFFERS EMPTY-BUFFERS ;  \ BLOCK
 
 \ ---- loading ---------------------------------------------------------------
-: LOAD ( blk -- ) \ interpret block blk, then continue where we were
+: LOAD ( blk -- ) \ BLOCK: interpret block blk, then continue where we were
    DUP 0= ABORT" block 0 cannot be loaded"
-   DUP (BLOCK) DROP                  \ a bad block fails here, source unchanged
-   BLK @ >R >IN @ >R SOURCE-ID @ >R  BLK ! 0 >IN ! 0 SOURCE-ID !
-   INTERPRET  R> SOURCE-ID ! R> >IN ! R> BLK ! ;
-: THRU ( blk1 blk2 -- ) 1+ SWAP ?DO I LOAD LOOP ;
+   DUP BLOCK DROP   \ a bad block fails here, source unchanged; UPDATE now marks blk
+   BLK @ >R >IN @ >R SRC-ID @ >R  BLK ! 0 >IN ! 0 SRC-ID !
+   INTERPRET  R> SRC-ID ! R> >IN ! R> BLK ! ;
+: THRU ( blk1 blk2 -- ) 1+ SWAP ?DO I LOAD LOOP ;  \ BLOCK EXT
 : --> ( -- ) \ continue loading with the next block
    BLK @ 0= ABORT" --> outside a loaded block"  1 BLK +! 0 >IN ! ; IMMEDIATE
 : ;S ( -- ) \ interpreting: stop loading this block; compiling: EXIT (fig)
@@ -142,13 +142,13 @@ CREATE CUR-BLK  ( -- a ) -1 ,   \ the block UPDATE marks, -1 = none
    20000O AND IF ." , write-locked" THEN ." ." ;
 
 \ ---- listing -------------------------------------------------------------
-VARIABLE SCR  ( -- a ) \ the block last listed (the editor's block)
+VARIABLE SCR  ( -- a ) \ BLOCK EXT: the block last listed (the editor's block)
 : -BLANKS ( addr len -- addr len' ) \ drop trailing blanks and control chars
    BEGIN DUP IF 2DUP + 1- C@ BL > 0= ELSE FALSE THEN WHILE 1- REPEAT ;
 : .LINE ( addr -- ) \ type a 64-character line, control characters as blanks
    64 -BLANKS 0 ?DO DUP I + C@ DUP BL 127 WITHIN 0= IF DROP BL THEN EMIT LOOP
    DROP ;
-: LIST ( blk -- ) \ show block blk with line numbers, make it SCR
+: LIST ( blk -- ) \ BLOCK EXT: show block blk with line numbers, make it SCR
    DUP BLOCK DROP DUP SCR ! CR ." Block " DUP U.
    16 0 DO CR I 2 U.R SPACE DUP BLOCK I 64 * + .LINE LOOP DROP CR ;
 : INDEX ( blk1 blk2 -- ) \ the first line of each block blk1..blk2

@@ -5,7 +5,7 @@
 \ are 0..15, 64 characters each. Commands that change the block UPDATE it;
 \ FLUSH (or SAVE-BUFFERS) writes it to disk. See forth/EDITOR.md.
 
-VOCABULARY EDITOR  ( -- ) \ make the editor's words visible (immediate)
+VOCABULARY EDITOR  ( -- ) \ TOOLS EXT: make the editor's words visible (immediate)
 EDITOR DEFINITIONS
 
 : LINE ( n -- addr ) \ address of line n of block SCR, n checked

@@ -1,49 +1,71 @@
 \ forth/kernel/interp.fs: text interpreter, compiler, vocabularies, errors, QUIT.
 
 \ ---- the input source ---------------------------------------------------------
-: SOURCE  ( -- a u )  BLK @ IF BLK @ (BLOCK) 1024 ELSE SRC 2@ THEN ;  \ (BLOCK): disk.fs
+: SOURCE  ( -- a u )  BLK @ IF BLK @ (BLOCK) 1024 ELSE SRC 2@ THEN ;  \ CORE: (BLOCK): disk.fs
 : REST  ( -- a u )  \ unparsed part of the source
   SOURCE >IN @ OVER MIN /STRING ;
-: PARSE  ( c -- a u )
+: PARSE  ( c -- a u )  \ CORE EXT
   >R REST OVER SWAP R> SCAN  ( a a' u' )  0<> 1 AND >R  OVER -  DUP R> + >IN +! ;
-: PARSE-NAME  ( -- a u )
+: PARSE-NAME  ( -- a u )  \ CORE EXT
   REST BL SKIP DROP SOURCE DROP - >IN !  BL PARSE ;
-: WORD  ( c -- ca )  \ counted string at HERE, a blank after it
+: WORD  ( c -- ca )  \ CORE: counted string at HERE, a blank after it
   >R REST R@ SKIP DROP SOURCE DROP - >IN !  R> PARSE
   DUP HERE C! HERE 1+ SWAP CMOVE  BL HERE COUNT + C!  HERE ;
-: CHAR  ( "c" -- c )  PARSE-NAME DROP C@ ;
-: (  ( "text<paren>" -- )  [CHAR] ) PARSE 2DROP ;  IMMEDIATE
-: \  ( "line" -- )  \ in a block: to the end of the 64-character line
+: CHAR  ( "c" -- c )  PARSE-NAME DROP C@ ;  \ CORE
+: (  ( "text<paren>" -- )  [CHAR] ) PARSE 2DROP ;  IMMEDIATE  \ CORE
+: \  ( "line" -- )  \ CORE EXT, BLOCK EXT: in a block, to the end of the 64-character line
   BLK @ IF >IN @ 63 + -64 AND >IN ! ELSE SOURCE NIP >IN ! THEN ;  IMMEDIATE
-: .(  ( "text<paren>" -- )  [CHAR] ) PARSE TYPE ;  IMMEDIATE
+: .(  ( "text<paren>" -- )  [CHAR] ) PARSE TYPE ;  IMMEDIATE  \ CORE EXT
 
-\ ---- numbers: optional -, digits in BASE, or a trailing O for octal --------------
+\ ---- numbers: Forth-2012 3.4.1.3 plus the project's trailing O ----------------
+\ 'c' a character; a prefix # $ % (decimal, hex, binary) for this number only;
+\ then an optional -, digits in BASE, and a trailing O (octal, in any base) or a
+\ trailing . (a double-cell number).
 : DIGIT?  ( c -- n true | false )
   UPC DUP [CHAR] 9 > IF DUP [CHAR] A < IF DROP FALSE EXIT THEN 7 - THEN
   [CHAR] 0 - DUP BASE @ U< IF TRUE ELSE DROP FALSE THEN ;
 : UD*  ( ud u -- ud' )  DUP >R UM* DROP SWAP R> UM* ROT + ;
-: >NUMBER  ( ud a u -- ud' a' u' )
+: >NUMBER  ( ud a u -- ud' a' u' )  \ CORE
   BEGIN DUP WHILE OVER C@ DIGIT? WHILE
     >R 2SWAP BASE @ UD* R> 0 D+ 2SWAP 1 /STRING
   REPEAT THEN ;
-: NUMBER?  ( a u -- n true | a u false )
+: CHAR-LITERAL?  ( a u -- c true | a u false )  \ 'c'
+  DUP 3 = IF OVER C@ [CHAR] ' = IF OVER 2+ C@ [CHAR] ' = IF
+    DROP 1+ C@ TRUE EXIT THEN THEN THEN  FALSE ;
+: PREFIX-BASE  ( c -- base | 0 )
+  DUP [CHAR] # = IF DROP 10 EXIT THEN  DUP [CHAR] $ = IF DROP 16 EXIT THEN
+  [CHAR] % = IF 2 ELSE 0 THEN ;
+: LAST-CHAR?  ( a u c -- a u' f )  \ strip a last character c (not the only one)
+  >R DUP 1 > IF 2DUP + 1- C@ UPC R@ = IF 1- R> DROP TRUE EXIT THEN THEN
+  R> DROP FALSE ;
+VARIABLE NUM-CELLS  ( -- a ) \ 1 or 2: the number being converted
+: NUMBER?  ( a u -- n 1 | d 2 | a u 0 )
+  CHAR-LITERAL? IF 1 EXIT THEN
   2DUP BASE @ >R
-  DUP 1 > IF 2DUP + 1- C@ UPC [CHAR] O = IF 1- 8 BASE ! THEN THEN
-  OVER C@ [CHAR] - = DUP >R IF 1 /STRING THEN
+  DUP IF OVER C@ PREFIX-BASE ?DUP IF BASE ! 1 /STRING THEN THEN
+  [CHAR] . LAST-CHAR? IF 2 ELSE 1 THEN NUM-CELLS !
+  [CHAR] O LAST-CHAR? IF 8 BASE ! THEN
+  DUP IF OVER C@ [CHAR] - = ELSE FALSE THEN DUP >R IF 1 /STRING THEN
   DUP IF 0 0 2SWAP >NUMBER NIP ELSE 2DROP 0 0 1 THEN
   R> SWAP R> BASE !  ( a u lo hi neg rest )
-  IF 2DROP DROP FALSE EXIT THEN
-  NIP ?NEGATE NIP NIP TRUE ;
+  IF 2DROP DROP 0 EXIT THEN
+  IF DNEGATE THEN 2SWAP 2DROP  NUM-CELLS @ 1 = IF DROP THEN  NUM-CELLS @ ;
 
-\ ---- finding words -----------------------------------------------------------------
-\ A vocabulary's body: +0 +2 +4 +6 the newest LFA of each of its four chains
-\ (names of length 0, 1, 2, 3 mod 4), +10 its VOC-LINK cell.
-\ Search: CONTEXT, then FORTH, each in the chain of the name's length.
+\ ---- finding words: word lists and the search order ----------------------------
+\ A word list (wid) is the body of a VOCABULARY or the space WORDLIST allots:
+\ +0 +2 +4 +6 the newest LFA of each of its four chains (names of length 0, 1,
+\ 2, 3 mod 4), +10 its VOC-LINK cell, +12 the vocabulary's name field (0 for a
+\ WORDLIST). The search order is CONTEXT's cells, CONTEXT @ searched first; a
+\ wid equal to the one before it is not searched again (FORTH FORTH at boot:
+\ FORTH-79's CONTEXT then FORTH, and a vocabulary word replaces CONTEXT @).
 : CHAIN  ( voc u -- a )  3 AND 2* + ;
-: SEARCH-NAME  ( a u -- nfa | 0 )
-  CONTEXT @ FORTH-BODY <> IF
-    2DUP CONTEXT @ OVER CHAIN @ (FIND) ?DUP IF NIP NIP EXIT THEN
-  THEN  FORTH-BODY OVER CHAIN @ (FIND) ;
+: WID-FIND  ( a u wid -- nfa | 0 )  OVER CHAIN @ (FIND) ;
+: SEARCH-NAME  ( a u -- nfa | 0 )  \ the locals while compiling, the search order
+  STATE @ IF LOCALS-HERE @ LOCALS-AREA <> IF
+    2DUP LOCAL-FIND ?DUP IF NIP NIP EXIT THEN THEN THEN
+  0 #ORDER @ 2* CONTEXT + CONTEXT ?DO  ( a u previous )
+    I @ TUCK <> IF 2 PICK 2 PICK 2 PICK WID-FIND ?DUP IF NIP NIP NIP UNLOOP EXIT THEN THEN
+  2 +LOOP DROP 2DROP 0 ;
 : UMAX  ( u1 u2 -- u )  2DUP U< IF SWAP THEN DROP ;
 : NEWEST-SLOT  ( heads -- slot | 0 )  \ the cell holding the newest header
   0 SWAP 4 0 DO
@@ -51,59 +73,70 @@
     2+
   LOOP DROP ;
 : NEWEST  ( voc -- lfa | 0 )  NEWEST-SLOT DUP IF @ THEN ;
-: FIND  ( ca -- ca 0 | xt 1 | xt -1 )
-  DUP COUNT SEARCH-NAME ?DUP IF NIP DUP NAME> SWAP C@ 128 AND IF 1 ELSE -1 THEN THEN ;
-: TICK  ( "name" -- xt )  PARSE-NAME SEARCH-NAME ?DUP 0= IF -13 THROW THEN NAME> ;
+: NFA>XT  ( nfa -- xt 1 | xt -1 )  \ 1 when IMMEDIATE
+  DUP NAME> SWAP C@ 128 AND IF 1 ELSE -1 THEN ;
+: FIND  ( ca -- ca 0 | xt 1 | xt -1 )  \ CORE, SEARCH
+  DUP COUNT SEARCH-NAME DUP IF NIP NFA>XT THEN ;
+: SEARCH-WORDLIST  ( a u wid -- 0 | xt 1 | xt -1 )  \ SEARCH
+  WID-FIND DUP IF NFA>XT THEN ;
+: ?NAME  ( a u -- nfa )  \ found in the search order, or error -13 naming it
+  2DUP SEARCH-NAME ?DUP IF NIP NIP EXIT THEN  WHAT 2! -13 THROW ;
+: TICK  ( "name" -- xt )  PARSE-NAME ?NAME NAME> ;
 
 \ ---- compiling ---------------------------------------------------------------------
 \ Control-flow items carry tags: 1 orig, 2 dest, 3 do-sys, 4 colon-sys; a
 \ mismatch is error -22 and nothing half-built stays in the dictionary.
 : ?PAIRS  ( tag expected -- )  <> IF -22 THROW THEN ;
 : ?COMP  ( -- )  STATE @ 0= IF -14 THROW THEN ;
-: LITERAL  ( n -- )  ['] (LIT) , , ;  IMMEDIATE COMPILE-ONLY
-: [  ( -- )  FALSE STATE ! ;  IMMEDIATE
-: ]  ( -- )  TRUE STATE ! ;
+: LITERAL  ( n -- )  ['] (LIT) , , ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: [  ( -- )  FALSE STATE ! ;  IMMEDIATE  \ CORE
+: ]  ( -- )  TRUE STATE ! ;  \ CORE
+: NUMBER  ( a u -- n | d )  \ a number for the interpreter, compiled when compiling
+  NUMBER? DUP 0= IF -13 THROW THEN
+  STATE @ IF 2 = IF SWAP POSTPONE LITERAL THEN POSTPONE LITERAL ELSE DROP THEN ;
 : >MARK  ( -- orig 1 )  HERE 0 , 1 ;
 : >RESOLVE  ( orig 1 -- )  1 ?PAIRS HERE SWAP ! ;
 : <MARK  ( -- dest 2 )  HERE 2 ;
 : <RESOLVE  ( dest 2 -- )  2 ?PAIRS , ;
-: IF  ( -- orig )  ['] ?BRANCH , >MARK ;  IMMEDIATE COMPILE-ONLY
-: ELSE  ( orig -- orig' )  ['] BRANCH , >MARK 2SWAP >RESOLVE ;  IMMEDIATE COMPILE-ONLY
-: THEN  ( orig -- )  >RESOLVE ;  IMMEDIATE COMPILE-ONLY
-: BEGIN  ( -- dest )  <MARK ;  IMMEDIATE COMPILE-ONLY
-: UNTIL  ( dest -- )  ['] ?BRANCH , <RESOLVE ;  IMMEDIATE COMPILE-ONLY
+: IF  ( -- orig )  ['] ?BRANCH , >MARK ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: ELSE  ( orig -- orig' )  ['] BRANCH , >MARK 2SWAP >RESOLVE ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: THEN  ( orig -- )  >RESOLVE ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: BEGIN  ( -- dest )  <MARK ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: UNTIL  ( dest -- )  ['] ?BRANCH , <RESOLVE ;  IMMEDIATE COMPILE-ONLY  \ CORE
 : END  ( dest -- )  ['] ?BRANCH , <RESOLVE ;  IMMEDIATE COMPILE-ONLY
-: AGAIN  ( dest -- )  ['] BRANCH , <RESOLVE ;  IMMEDIATE COMPILE-ONLY
-: WHILE  ( dest -- orig dest )  ['] ?BRANCH , >MARK 2SWAP ;  IMMEDIATE COMPILE-ONLY
-: REPEAT  ( orig dest -- )  ['] BRANCH , <RESOLVE >RESOLVE ;  IMMEDIATE COMPILE-ONLY
-: DO  ( -- do-sys )  ['] (DO) , HERE 0 , 3 ;  IMMEDIATE COMPILE-ONLY
-: ?DO  ( -- do-sys )  ['] (?DO) , HERE 0 , 3 ;  IMMEDIATE COMPILE-ONLY
-: LOOP  ( do-sys -- )  3 ?PAIRS ['] (LOOP) , DUP 2+ , HERE SWAP ! ;  IMMEDIATE COMPILE-ONLY
-: +LOOP  ( do-sys -- )  3 ?PAIRS ['] (+LOOP) , DUP 2+ , HERE SWAP ! ;  IMMEDIATE COMPILE-ONLY
-: ,"  ( "ccc"" -- )  [CHAR] " PARSE DUP C, HERE OVER ALLOT SWAP CMOVE ALIGN ;
-: ."  ( "ccc"" -- )  ['] (.") , ," ;  IMMEDIATE COMPILE-ONLY
-: ABORT"  ( "ccc"" -- )  ['] (ABORT") , ," ;  IMMEDIATE COMPILE-ONLY
-CREATE SBUFS 256 ALLOT  ( -- a ) \ S" while interpreting: two buffers in turn
+: AGAIN  ( dest -- )  ['] BRANCH , <RESOLVE ;  IMMEDIATE COMPILE-ONLY  \ CORE EXT
+: WHILE  ( dest -- orig dest )  ['] ?BRANCH , >MARK 2SWAP ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: REPEAT  ( orig dest -- )  ['] BRANCH , <RESOLVE >RESOLVE ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: DO  ( -- do-sys )  ['] (DO) , HERE 0 , 3 ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: ?DO  ( -- do-sys )  ['] (?DO) , HERE 0 , 3 ;  IMMEDIATE COMPILE-ONLY  \ CORE EXT
+: LOOP  ( do-sys -- )  3 ?PAIRS ['] (LOOP) , DUP 2+ , HERE SWAP ! ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: +LOOP  ( do-sys -- )  3 ?PAIRS ['] (+LOOP) , DUP 2+ , HERE SWAP ! ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: S,  ( a u -- )  DUP C, HERE OVER ALLOT SWAP CMOVE ALIGN ;  \ a counted string, aligned
+: ,"  ( "ccc"" -- )  [CHAR] " PARSE S, ;
+: ."  ( "ccc"" -- )  ['] (.") , ," ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: ABORT"  ( "ccc"" -- )  ['] (ABORT") , ," ;  IMMEDIATE COMPILE-ONLY  \ CORE, EXCEPTION EXT
+CREATE SBUFS 512 ALLOT  ( -- a ) \ S" while interpreting: four buffers in turn
 VARIABLE SBUF  ( -- a ) \ offset of the buffer used last
-: S"  ( "text<quote>" -- a u )
+: NEXT-SBUF  ( -- a )  SBUF @ 128 + 511 AND DUP SBUF ! SBUFS + ;  \ 128 bytes
+: S"  ( "text<quote>" -- a u )  \ CORE
   STATE @ IF ['] (S") , ," EXIT THEN
-  SBUF @ 128 XOR DUP SBUF ! SBUFS +  >R
+  NEXT-SBUF >R
   [CHAR] " PARSE 128 MIN R@ SWAP DUP >R CMOVE 2R> ;  IMMEDIATE
-: [CHAR]  ( "c" -- )  CHAR POSTPONE LITERAL ;  IMMEDIATE COMPILE-ONLY
-: [']  ( "name" -- )  TICK POSTPONE LITERAL ;  IMMEDIATE COMPILE-ONLY
-: [COMPILE]  ( "name" -- )  TICK , ;  IMMEDIATE COMPILE-ONLY
+: [CHAR]  ( "c" -- )  CHAR POSTPONE LITERAL ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: [']  ( "name" -- )  TICK POSTPONE LITERAL ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: [COMPILE]  ( "name" -- )  TICK , ;  IMMEDIATE COMPILE-ONLY  \ CORE EXT
 \ ' is FORTH-79's: IMMEDIATE, and inside a definition it compiles the address
 \ as a literal (block 1008: : Install.Int.Servo ... ' Interrupt.Servo 100O ! ...).
 \ Forth-94 programs use ['] there; TICK is the plain parsing word.
-: '  ( "name" -- xt )  TICK STATE @ IF POSTPONE LITERAL THEN ;  IMMEDIATE
-: POSTPONE  ( "name" -- )
-  PARSE-NAME SEARCH-NAME ?DUP 0= IF -13 THROW THEN
-  DUP NAME> SWAP C@ 128 AND IF , ELSE POSTPONE LITERAL ['] COMPILE, , THEN ;
+: '  ( "name" -- xt )  TICK STATE @ IF POSTPONE LITERAL THEN ;  IMMEDIATE  \ CORE
+: POSTPONE  ( "name" -- )  \ CORE
+  PARSE-NAME ?NAME  DUP NAME> SWAP C@ 128 AND IF , ELSE POSTPONE LITERAL ['] COMPILE, , THEN ;
   IMMEDIATE COMPILE-ONLY
-: RECURSE  ( -- )  LAST @ NAME> , ;  IMMEDIATE COMPILE-ONLY
+: RECURSE  ( -- )  LAST-XT @ , ;  IMMEDIATE COMPILE-ONLY  \ CORE
 
 \ ---- headers and defining words ------------------------------------------------------
 VARIABLE COLON-LFA  ( -- a ) \ header of the definition being compiled
+VARIABLE LAST-XT  ( -- a ) \ xt of the newest : or :NONAME definition (RECURSE)
 : HEADER,  ( a u -- )  \ link into CURRENT, name as written
   DUP 0= IF -16 THROW THEN  DUP 31 > IF -19 THROW THEN
   ALIGN HERE  CURRENT @ 2 PICK CHAIN  DUP @ ,  !  HERE LAST !
@@ -115,32 +148,40 @@ DOCOL CONSTANT 'DOCOL  ( -- a )
 DOVAR CONSTANT 'DOVAR  ( -- a )
 DOCON CONSTANT 'DOCON  ( -- a )
 DODOES CONSTANT 'DODOES  ( -- a )
-: IMMEDIATE  ( -- )  LAST @ DUP C@ 128 OR SWAP C! ;
+: IMMEDIATE  ( -- )  LAST @ DUP C@ 128 OR SWAP C! ;  \ CORE
 : COMPILE-ONLY  ( -- )  LAST @ DUP C@ 64 OR SWAP C! ;
 : SMUDGE  ( -- )  LAST @ DUP C@ 32 OR SWAP C! ;
 : REVEAL  ( -- )  LAST @ DUP C@ 32 INVERT AND SWAP C! ;
-: CREATE  ( "name" -- )  ?END-CODE PARSE-NAME HEADER, 'DOVAR JSR-W CF, ;
-: VARIABLE  ( "name" -- )  CREATE 0 , ;
-: CONSTANT  ( x "name" -- )  ?END-CODE PARSE-NAME HEADER, 'DOCON JSR-W CF, , ;
-: CON  ( x "name" -- )  CONSTANT ;
-: VAR  ( x "name" -- )  CREATE , ;
-: ARRAY  ( n "name" -- )  CREATE CELLS DUP ALLOT HERE OVER - SWAP ERASE ;
+: CREATE  ( "name" -- )  ?END-CODE PARSE-NAME HEADER, 'DOVAR JSR-W CF, ;  \ CORE
+: VARIABLE  ( "name" -- )  CREATE 0 , ;  \ CORE
+: CONSTANT  ( x "name" -- )  ?END-CODE PARSE-NAME HEADER, 'DOCON JSR-W CF, , ;  \ CORE
+: CON  ( x "name" -- )  CONSTANT ;  \ the appendix's constant
+: VAR  ( x "name" -- )  CREATE , ;  \ the appendix's variable with a value
+: ARRAY  ( n "name" -- )  CREATE CELLS DUP ALLOT HERE OVER - SWAP ERASE ;  \ the appendix's n cells
 : (DOES>)  ( -- )  R> LAST @ NAME> 2+ ! ;  COMPILE-ONLY
-: DOES>  ( -- )  ['] (DOES>) , JSR-IP , 'DODOES , ;  IMMEDIATE COMPILE-ONLY
-: VALUE  ( x "name" -- )  CONSTANT ;
-: TO  ( x "name" -- )
+: DOES>  ( -- )  LOCALS-LEAVE, LOCALS-CLEAR  ['] (DOES>) , JSR-IP , 'DODOES , ;  IMMEDIATE COMPILE-ONLY  \ CORE
+: VALUE  ( x "name" -- )  CONSTANT ;  \ CORE EXT (TO stores into it)
+: TO  ( x "name" -- )  \ CORE EXT, DOUBLE EXT
   TICK >BODY STATE @ IF POSTPONE LITERAL ['] ! , ELSE ! THEN ;  IMMEDIATE
-: :  ( "name" -- colon-sys )  \ also ends an open CODE word (block 1008)
-  ?END-CODE  CURRENT @ CONTEXT !  ALIGN HERE COLON-LFA !
-  PARSE-NAME HEADER, SMUDGE  'DOCOL JSR-IP CF,  4 ] ;
-: :NONAME  ( -- xt colon-sys )  0 COLON-LFA !  ALIGN HERE 'DOCOL JSR-IP CF, 4 ] ;
-: ;  ( colon-sys -- )
-  ['] EXIT ,  4 ?PAIRS  COLON-LFA @ IF REVEAL THEN  0 COLON-LFA !  POSTPONE [ ;
+: VOC-NAME  ( wid -- nfa | 0 )  10 + @ ;  \ 0: a WORDLIST, not a VOCABULARY
+\ FORTH-79: : sets CONTEXT to CURRENT. Done only when both are vocabularies, so
+\ that word lists and search orders of standard programs stay as they set them.
+: COLON-CONTEXT  ( -- )
+  CONTEXT @ VOC-NAME CURRENT @ VOC-NAME AND IF CURRENT @ CONTEXT ! THEN ;
+: :  ( "name" -- colon-sys )  \ CORE: also ends an open CODE word (block 1008)
+  ?END-CODE  COLON-CONTEXT  LOCALS-CLEAR  ALIGN HERE COLON-LFA !
+  PARSE-NAME HEADER, SMUDGE  HERE LAST-XT !  'DOCOL JSR-IP CF,  4 ] ;
+: :NONAME  ( -- xt colon-sys )  \ CORE EXT
+  0 COLON-LFA !  LOCALS-CLEAR  ALIGN HERE DUP LAST-XT !  'DOCOL JSR-IP CF, 4 ] ;
+: ;  ( colon-sys -- )  \ CORE
+  LOCALS-LEAVE,  ['] EXIT ,  4 ?PAIRS  LOCALS-CLEAR  COLON-LFA @ IF REVEAL THEN  0 COLON-LFA !  POSTPONE [ ;
   IMMEDIATE COMPILE-ONLY
-: VOCABULARY  ( "name" -- )
-  CREATE 0 , 0 , 0 , 0 ,  HERE VOC-LINK @ , VOC-LINK !  IMMEDIATE  DOES> CONTEXT ! ;
-VOCABULARY FORTH  ( -- ) \ the kernel's vocabulary
+: WORDLIST,  ( nfa -- wid )  \ an empty word list, linked from VOC-LINK
+  ALIGN HERE  0 , 0 , 0 , 0 ,  HERE VOC-LINK @ , VOC-LINK !  SWAP , ;
+: VOCABULARY  ( "name" -- )  \ FORTH-79: the name replaces CONTEXT @ (immediate)
+  CREATE LAST @ WORDLIST, DROP  IMMEDIATE  DOES> CONTEXT ! ;
+VOCABULARY FORTH  ( -- ) \ SEARCH EXT: the kernel's vocabulary
 ' FORTH >BODY CONSTANT FORTH-BODY  ( -- a )
-VOCABULARY ASSEMBLER  ( -- ) \ CODE's vocabulary (resident assembler: issue 4)
-: DEFINITIONS  ( -- )  CONTEXT @ CURRENT ! ;
+VOCABULARY ASSEMBLER  ( -- ) \ TOOLS EXT: CODE's vocabulary
+: DEFINITIONS  ( -- )  CONTEXT @ CURRENT ! ;  \ SEARCH
 \ CODE END-CODE ;CODE: forth/kernel/code.fs (they need the resident assembler)

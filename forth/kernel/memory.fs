@@ -13,6 +13,7 @@
   154006O EQU TRAP-VEC    \   vector of the last unexpected trap
   154010O EQU TRAP-PC     \   PC it interrupted
   154012O EQU THROW-CELL  \   THROW's code address: CODE words raise errors through it
+  154014O EQU TICKS       \   60 Hz ticks the kernel's clock handler counted (double)
   154400O EQU RING        \ 154400-155377 console receive ring (511 characters)
      777O EQU RING-MASK
   155400O EQU TIB0        \ 155400-155777 terminal input buffer

@@ -13,11 +13,11 @@ LABEL DOCON  ( -- x )  S -) W ) MOV,  RP )+ TST,  NEXT,  END-CODE
 \ DOES> code is JSR IP,@#DODOES: return stack = IP, old W; W = body
 LABEL DODOES  ( -- a )  S -) W MOV,  RP ) RP )+ MOV,  NEXT,  END-CODE
 
-CODE EXIT  ( -- ) ( R: ip -- )  IP RP )+ MOV,  NEXT,  END-CODE  COMPILE-ONLY
+CODE EXIT  ( -- ) ( R: ip -- )  IP RP )+ MOV,  NEXT,  END-CODE  COMPILE-ONLY  \ CORE
 CODE (LIT)  ( -- x )  S -) IP )+ MOV,  NEXT,  END-CODE
 CODE BRANCH  ( -- )  BRANCH,  END-CODE
 CODE ?BRANCH  ( f -- )  S )+ TST,  EQ IF,  BRANCH,  THEN,  IP )+ TST,  NEXT,  END-CODE
-CODE EXECUTE  ( xt -- )  R0 S )+ MOV,  R0 ) JMP,  END-CODE
+CODE EXECUTE  ( xt -- )  R0 S )+ MOV,  R0 ) JMP,  END-CODE  \ CORE
 
 \ DO loops. Return stack: leave address, bias = 100000-limit, index+bias.
 \ Adding to index+bias overflows (V) exactly when the index crosses the
@@ -34,86 +34,86 @@ CODE (LOOP)  ( -- )
 CODE (+LOOP)  ( n -- )
   RP ) S )+ ADD,  VS IF,  RP 6 # ADD,  IP )+ TST,  NEXT,  THEN,  BRANCH,
   END-CODE
-CODE I  ( -- n )  R0 RP ) MOV,  R0 2 RP I) SUB,  S -) R0 MOV,  NEXT,  END-CODE  COMPILE-ONLY
-CODE J  ( -- n )  R0 6 RP I) MOV,  R0 10O RP I) SUB,  S -) R0 MOV,  NEXT,  END-CODE  COMPILE-ONLY
-CODE LEAVE  ( -- )  RP 4 # ADD,  IP RP )+ MOV,  NEXT,  END-CODE  COMPILE-ONLY
-CODE UNLOOP  ( -- )  RP 6 # ADD,  NEXT,  END-CODE  COMPILE-ONLY
+CODE I  ( -- n )  R0 RP ) MOV,  R0 2 RP I) SUB,  S -) R0 MOV,  NEXT,  END-CODE  COMPILE-ONLY  \ CORE
+CODE J  ( -- n )  R0 6 RP I) MOV,  R0 10O RP I) SUB,  S -) R0 MOV,  NEXT,  END-CODE  COMPILE-ONLY  \ CORE
+CODE LEAVE  ( -- )  RP 4 # ADD,  IP RP )+ MOV,  NEXT,  END-CODE  COMPILE-ONLY  \ CORE
+CODE UNLOOP  ( -- )  RP 6 # ADD,  NEXT,  END-CODE  COMPILE-ONLY  \ CORE
 
 \ stack
-CODE DUP  ( x -- x x )  S -) S ) MOV,  NEXT,  END-CODE
-CODE DROP  ( x -- )  S 2 # ADD,  NEXT,  END-CODE
-CODE SWAP  ( a b -- b a )  R0 S ) MOV,  S ) 2 S I) MOV,  2 S I) R0 MOV,  NEXT,  END-CODE
-CODE OVER  ( a b -- a b a )  S -) 2 S I) MOV,  NEXT,  END-CODE
-CODE ROT  ( a b c -- b c a )
+CODE DUP  ( x -- x x )  S -) S ) MOV,  NEXT,  END-CODE  \ CORE
+CODE DROP  ( x -- )  S 2 # ADD,  NEXT,  END-CODE  \ CORE
+CODE SWAP  ( a b -- b a )  R0 S ) MOV,  S ) 2 S I) MOV,  2 S I) R0 MOV,  NEXT,  END-CODE  \ CORE
+CODE OVER  ( a b -- a b a )  S -) 2 S I) MOV,  NEXT,  END-CODE  \ CORE
+CODE ROT  ( a b c -- b c a )  \ CORE
   R0 4 S I) MOV,  4 S I) 2 S I) MOV,  2 S I) S ) MOV,  S ) R0 MOV,  NEXT,  END-CODE
-CODE NIP  ( a b -- b )  R0 S )+ MOV,  S ) R0 MOV,  NEXT,  END-CODE
-CODE TUCK  ( a b -- b a b )
+CODE NIP  ( a b -- b )  R0 S )+ MOV,  S ) R0 MOV,  NEXT,  END-CODE  \ CORE EXT
+CODE TUCK  ( a b -- b a b )  \ CORE EXT
   R0 S ) MOV,  S ) 2 S I) MOV,  2 S I) R0 MOV,  S -) R0 MOV,  NEXT,  END-CODE
-CODE ?DUP  ( x -- 0 | x x )  S ) TST,  NE IF,  S -) S ) MOV,  THEN,  NEXT,  END-CODE
-CODE 2DUP  ( a b -- a b a b )  S -) 2 S I) MOV,  S -) 2 S I) MOV,  NEXT,  END-CODE
-CODE 2DROP  ( a b -- )  S 4 # ADD,  NEXT,  END-CODE
-CODE 2SWAP  ( a b c d -- c d a b )
+CODE ?DUP  ( x -- 0 | x x )  S ) TST,  NE IF,  S -) S ) MOV,  THEN,  NEXT,  END-CODE  \ CORE
+CODE 2DUP  ( a b -- a b a b )  S -) 2 S I) MOV,  S -) 2 S I) MOV,  NEXT,  END-CODE  \ CORE
+CODE 2DROP  ( a b -- )  S 4 # ADD,  NEXT,  END-CODE  \ CORE
+CODE 2SWAP  ( a b c d -- c d a b )  \ CORE
   R0 S ) MOV,  S ) 4 S I) MOV,  4 S I) R0 MOV,
   R0 2 S I) MOV,  2 S I) 6 S I) MOV,  6 S I) R0 MOV,  NEXT,  END-CODE
-CODE 2OVER  ( a b c d -- a b c d a b )  S -) 6 S I) MOV,  S -) 6 S I) MOV,  NEXT,  END-CODE
-CODE PICK  ( xu .. x0 u -- xu .. x0 xu )
+CODE 2OVER  ( a b c d -- a b c d a b )  S -) 6 S I) MOV,  S -) 6 S I) MOV,  NEXT,  END-CODE  \ CORE
+CODE PICK  ( xu .. x0 u -- xu .. x0 xu )  \ CORE EXT
   R0 S ) MOV,  R0 R0 ADD,  R0 S ADD,  S ) 2 R0 I) MOV,  NEXT,  END-CODE
-CODE >R  ( x -- ) ( R: -- x )  RP -) S )+ MOV,  NEXT,  END-CODE  COMPILE-ONLY
-CODE R>  ( -- x ) ( R: x -- )  S -) RP )+ MOV,  NEXT,  END-CODE  COMPILE-ONLY
-CODE R@  ( -- x ) ( R: x -- x )  S -) RP ) MOV,  NEXT,  END-CODE  COMPILE-ONLY
-CODE 2>R  ( a b -- ) ( R: -- a b )  RP -) 2 S I) MOV,  RP -) S ) MOV,  S 4 # ADD,  NEXT,
+CODE >R  ( x -- ) ( R: -- x )  RP -) S )+ MOV,  NEXT,  END-CODE  COMPILE-ONLY  \ CORE
+CODE R>  ( -- x ) ( R: x -- )  S -) RP )+ MOV,  NEXT,  END-CODE  COMPILE-ONLY  \ CORE
+CODE R@  ( -- x ) ( R: x -- x )  S -) RP ) MOV,  NEXT,  END-CODE  COMPILE-ONLY  \ CORE
+CODE 2>R  ( a b -- ) ( R: -- a b )  RP -) 2 S I) MOV,  RP -) S ) MOV,  S 4 # ADD,  NEXT,  \ CORE EXT
   END-CODE  COMPILE-ONLY
-CODE 2R>  ( -- a b ) ( R: a b -- )  S -) 2 RP I) MOV,  S -) RP ) MOV,  RP 4 # ADD,  NEXT,
+CODE 2R>  ( -- a b ) ( R: a b -- )  S -) 2 RP I) MOV,  S -) RP ) MOV,  RP 4 # ADD,  NEXT,  \ CORE EXT
   END-CODE  COMPILE-ONLY
 CODE SP@  ( -- a )  R0 S MOV,  S -) R0 MOV,  NEXT,  END-CODE
 CODE SP!  ( a -- )  S S ) MOV,  NEXT,  END-CODE
 CODE RP@  ( -- a )  S -) RP MOV,  NEXT,  END-CODE
 CODE RP!  ( a -- )  RP S )+ MOV,  NEXT,  END-CODE
-CODE DEPTH  ( -- n )  R0 S0 # MOV,  R0 S SUB,  R0 ASR,  S -) R0 MOV,  NEXT,  END-CODE
+CODE DEPTH  ( -- n )  R0 S0 # MOV,  R0 S SUB,  R0 ASR,  S -) R0 MOV,  NEXT,  END-CODE  \ CORE
 
 \ arithmetic and logic
-CODE +  ( a b -- a+b )  S ) S )+ ADD,  NEXT,  END-CODE
-CODE -  ( a b -- a-b )  S ) S )+ SUB,  NEXT,  END-CODE
-CODE AND  ( a b -- a&b )  R0 S )+ MOV,  R0 COM,  S ) R0 BIC,  NEXT,  END-CODE
-CODE OR  ( a b -- a|b )  S ) S )+ BIS,  NEXT,  END-CODE
-CODE XOR  ( a b -- a^b )  R0 S )+ MOV,  S ) R0 XOR,  NEXT,  END-CODE
-CODE INVERT  ( x -- ~x )  S ) COM,  NEXT,  END-CODE
-CODE NEGATE  ( n -- -n )  S ) NEG,  NEXT,  END-CODE
-CODE 1+  ( n -- n+1 )  S ) INC,  NEXT,  END-CODE
-CODE 1-  ( n -- n-1 )  S ) DEC,  NEXT,  END-CODE
+CODE +  ( a b -- a+b )  S ) S )+ ADD,  NEXT,  END-CODE  \ CORE
+CODE -  ( a b -- a-b )  S ) S )+ SUB,  NEXT,  END-CODE  \ CORE
+CODE AND  ( a b -- a&b )  R0 S )+ MOV,  R0 COM,  S ) R0 BIC,  NEXT,  END-CODE  \ CORE
+CODE OR  ( a b -- a|b )  S ) S )+ BIS,  NEXT,  END-CODE  \ CORE
+CODE XOR  ( a b -- a^b )  R0 S )+ MOV,  S ) R0 XOR,  NEXT,  END-CODE  \ CORE
+CODE INVERT  ( x -- ~x )  S ) COM,  NEXT,  END-CODE  \ CORE
+CODE NEGATE  ( n -- -n )  S ) NEG,  NEXT,  END-CODE  \ CORE
+CODE 1+  ( n -- n+1 )  S ) INC,  NEXT,  END-CODE  \ CORE
+CODE 1-  ( n -- n-1 )  S ) DEC,  NEXT,  END-CODE  \ CORE
 CODE 2+  ( n -- n+2 )  S ) 2 # ADD,  NEXT,  END-CODE
 CODE 2-  ( n -- n-2 )  S ) 2 # SUB,  NEXT,  END-CODE
-CODE 2*  ( x -- x*2 )  S ) ASL,  NEXT,  END-CODE
-CODE 2/  ( x -- x/2 )  S ) ASR,  NEXT,  END-CODE
-CODE LSHIFT  ( x u -- x' )
+CODE 2*  ( x -- x*2 )  S ) ASL,  NEXT,  END-CODE  \ CORE
+CODE 2/  ( x -- x/2 )  S ) ASR,  NEXT,  END-CODE  \ CORE
+CODE LSHIFT  ( x u -- x' )  \ CORE
   R0 S )+ MOV,  NE IF,  BEGIN,  S ) ASL,  R0 DEC,  EQ UNTIL,  THEN,  NEXT,  END-CODE
-CODE RSHIFT  ( x u -- x' )
+CODE RSHIFT  ( x u -- x' )  \ CORE
   R0 S )+ MOV,  NE IF,  BEGIN,  CLC,  S ) ROR,  R0 DEC,  EQ UNTIL,  THEN,  NEXT,  END-CODE
-CODE =  ( a b -- f )  EQ BINCMP,  END-CODE
-CODE <>  ( a b -- f )  NE BINCMP,  END-CODE
-CODE <  ( a b -- f )  LT BINCMP,  END-CODE
-CODE >  ( a b -- f )  GT BINCMP,  END-CODE
-CODE U<  ( a b -- f )  LO BINCMP,  END-CODE
-CODE U>  ( a b -- f )  HI BINCMP,  END-CODE
-CODE 0=  ( x -- f )  EQ UNCMP,  END-CODE
-CODE 0<>  ( x -- f )  NE UNCMP,  END-CODE
-CODE 0<  ( n -- f )  MI UNCMP,  END-CODE
-CODE 0>  ( n -- f )  GT UNCMP,  END-CODE
+CODE =  ( a b -- f )  EQ BINCMP,  END-CODE  \ CORE
+CODE <>  ( a b -- f )  NE BINCMP,  END-CODE  \ CORE EXT
+CODE <  ( a b -- f )  LT BINCMP,  END-CODE  \ CORE
+CODE >  ( a b -- f )  GT BINCMP,  END-CODE  \ CORE
+CODE U<  ( a b -- f )  LO BINCMP,  END-CODE  \ CORE
+CODE U>  ( a b -- f )  HI BINCMP,  END-CODE  \ CORE EXT
+CODE 0=  ( x -- f )  EQ UNCMP,  END-CODE  \ CORE
+CODE 0<>  ( x -- f )  NE UNCMP,  END-CODE  \ CORE EXT
+CODE 0<  ( n -- f )  MI UNCMP,  END-CODE  \ CORE
+CODE 0>  ( n -- f )  GT UNCMP,  END-CODE  \ CORE EXT
 
 \ EIS multiply and divide (MUL/DIV on an even register: R0 high, R1 low)
-CODE *  ( a b -- a*b )  R0 S )+ MOV,  R0 S ) MUL,  S ) T MOV,  NEXT,  END-CODE
-CODE M*  ( a b -- d )  R0 S ) MOV,  R0 2 S I) MUL,  2 S I) T MOV,  S ) R0 MOV,  NEXT,
+CODE *  ( a b -- a*b )  R0 S )+ MOV,  R0 S ) MUL,  S ) T MOV,  NEXT,  END-CODE  \ CORE
+CODE M*  ( a b -- d )  R0 S ) MOV,  R0 2 S I) MUL,  2 S I) T MOV,  S ) R0 MOV,  NEXT,  \ CORE
   END-CODE
-CODE UM*  ( u1 u2 -- ud )  \ signed MUL, then add back what the signs took away
+CODE UM*  ( u1 u2 -- ud )  \ CORE: signed MUL, then add back what the signs took away
   R0 S ) MOV,  R0 2 S I) MUL,
   S ) TST,  MI IF,  R0 2 S I) ADD,  THEN,
   2 S I) TST,  MI IF,  R0 S ) ADD,  THEN,
   2 S I) T MOV,  S ) R0 MOV,  NEXT,  END-CODE
-CODE SM/REM  ( d n -- rem quot )  \ symmetric: DIV's own rounding
+CODE SM/REM  ( d n -- rem quot )  \ CORE: symmetric: DIV's own rounding
   S ) TST,  EQ IF,  -10 THROW,  THEN,
   R0 2 S I) MOV,  T 4 S I) MOV,  R0 S )+ DIV,  2 S I) T MOV,  S ) R0 MOV,  NEXT,
   END-CODE
-CODE UM/MOD  ( ud u -- rem quot )
+CODE UM/MOD  ( ud u -- rem quot )  \ CORE
   S ) TST,  EQ IF,  -10 THROW,  THEN,
   \ EIS DIV is signed: usable when divisor and high word are below 100000 and
   \ the quotient fits (no V); otherwise 16 shift-and-subtract steps
@@ -132,27 +132,27 @@ CODE UM/MOD  ( ud u -- rem quot )
     R3 DEC,
   EQ UNTIL,
   S ) R0 MOV,  S -) T MOV,  NEXT,  END-CODE
-CODE D+  ( d1 d2 -- d )
+CODE D+  ( d1 d2 -- d )  \ DOUBLE
   R0 S )+ MOV,  T S )+ MOV,  2 S I) T ADD,  S ) ADC,  S ) R0 ADD,  NEXT,  END-CODE
-CODE DNEGATE  ( d -- -d )  S ) NEG,  2 S I) NEG,  S ) SBC,  NEXT,  END-CODE
+CODE DNEGATE  ( d -- -d )  S ) NEG,  2 S I) NEG,  S ) SBC,  NEXT,  END-CODE  \ DOUBLE
 
 \ memory
-CODE @  ( a -- x )  R0 S ) MOV,  ?ODD,  S ) R0 ) MOV,  NEXT,  END-CODE
-CODE !  ( x a -- )  R0 S ) MOV,  ?ODD,  S 2 # ADD,  R0 ) S )+ MOV,  NEXT,  END-CODE
-CODE C@  ( a -- c )  R0 S ) MOV,  S ) CLR,  S ) R0 ) MOVB,  NEXT,  END-CODE
-CODE C!  ( c a -- )  R0 S )+ MOV,  T S )+ MOV,  R0 ) T MOVB,  NEXT,  END-CODE
-CODE +!  ( n a -- )  R0 S ) MOV,  ?ODD,  S 2 # ADD,  R0 ) S )+ ADD,  NEXT,  END-CODE
-CODE 2@  ( a -- x1 x2 )  R0 S ) MOV,  ?ODD,  S ) 2 R0 I) MOV,  S -) R0 ) MOV,  NEXT,  END-CODE
-CODE 2!  ( x1 x2 a -- )  R0 S ) MOV,  ?ODD,  S 2 # ADD,  R0 )+ S )+ MOV,  R0 ) S )+ MOV,  NEXT,  END-CODE
+CODE @  ( a -- x )  R0 S ) MOV,  ?ODD,  S ) R0 ) MOV,  NEXT,  END-CODE  \ CORE
+CODE !  ( x a -- )  R0 S ) MOV,  ?ODD,  S 2 # ADD,  R0 ) S )+ MOV,  NEXT,  END-CODE  \ CORE
+CODE C@  ( a -- c )  R0 S ) MOV,  S ) CLR,  S ) R0 ) MOVB,  NEXT,  END-CODE  \ CORE
+CODE C!  ( c a -- )  R0 S )+ MOV,  T S )+ MOV,  R0 ) T MOVB,  NEXT,  END-CODE  \ CORE
+CODE +!  ( n a -- )  R0 S ) MOV,  ?ODD,  S 2 # ADD,  R0 ) S )+ ADD,  NEXT,  END-CODE  \ CORE
+CODE 2@  ( a -- x1 x2 )  R0 S ) MOV,  ?ODD,  S ) 2 R0 I) MOV,  S -) R0 ) MOV,  NEXT,  END-CODE  \ CORE
+CODE 2!  ( x1 x2 a -- )  R0 S ) MOV,  ?ODD,  S 2 # ADD,  R0 )+ S )+ MOV,  R0 ) S )+ MOV,  NEXT,  END-CODE  \ CORE
 CODE 1SET  ( a -- )  R0 S )+ MOV,  R0 ) 1 # MOV,  NEXT,  END-CODE
-CODE CMOVE  ( src dst n -- )
+CODE CMOVE  ( src dst n -- )  \ STRING
   T S )+ MOV,  W S )+ MOV,  R0 S )+ MOV,
   T TST,  NE IF,  BEGIN,  W )+ R0 )+ MOVB,  T DEC,  EQ UNTIL,  THEN,  NEXT,  END-CODE
-CODE CMOVE>  ( src dst n -- )
+CODE CMOVE>  ( src dst n -- )  \ STRING
   T S )+ MOV,  W S )+ MOV,  R0 S )+ MOV,  W T ADD,  R0 T ADD,
   T TST,  NE IF,  R3 T MOV,  BEGIN,  W -) R0 -) MOVB,  R3 DEC,  EQ UNTIL,  THEN,
   NEXT,  END-CODE
-CODE FILL  ( a n c -- )
+CODE FILL  ( a n c -- )  \ CORE
   R0 S )+ MOV,  T S )+ MOV,  W S )+ MOV,
   T TST,  NE IF,  BEGIN,  W )+ R0 MOVB,  T DEC,  EQ UNTIL,  THEN,  NEXT,  END-CODE
 
@@ -202,15 +202,15 @@ LABEL RXINT
   T RXTAIL @# CMP,
   EQ IF,  RXLOST @# INC,  ELSE,  RING W I) R0 MOVB,  RXHEAD @# T MOV,  THEN,
   W RP )+ MOV,  T RP )+ MOV,  R0 RP )+ MOV,  RTI,  END-CODE
-CODE KEY?  ( -- f )
+CODE KEY?  ( -- f )  \ FACILITY
   T CLR,  RXTAIL @# RXHEAD @# CMP,  NE IF,  T DEC,  THEN,  S -) T MOV,  NEXT,  END-CODE
-CODE KEY  ( -- c )
+CODE KEY  ( -- c )  \ CORE
   BEGIN,  RXTAIL @# RXHEAD @# CMP,  NE UNTIL,
   W RXTAIL @# MOV,  S -) CLR,  S ) RING W I) MOVB,
   W INC,  W RING-MASK INVERT # BIC,  RXTAIL @# W MOV,  NEXT,  END-CODE
 CODE PRIORITY!  ( n -- )  \ processor priority 0-7
   R0 S )+ MOV,  R0 ASL,  R0 ASL,  R0 ASL,  R0 ASL,  R0 ASL,  R0 MTPS,  NEXT,  END-CODE
-CODE EMIT  ( c -- )
+CODE EMIT  ( c -- )  \ CORE
   BEGIN,  177564O @# 200O # BIT,  NE UNTIL,  R0 S )+ MOV,  177566O @# R0 MOV,  NEXT,
   END-CODE
 

@@ -9,14 +9,15 @@ VARIABLE 'ON-ERROR  ( -- a ) \ xt run after every error (0 = none)
 \ IF BEGIN DO ?DO in interpret state starts a temporary definition at HERE;
 \ when the structure closes it is run and HERE is put back.
 VARIABLE TEMP-DEPTH  ( -- a ) \ depth+1 when it started, 0 = none
-VARIABLE TEMP-START  ( -- a )
+VARIABLE TEMP-START  ( -- a ) \ where its code starts (HERE aligned)
+VARIABLE TEMP-HERE  ( -- a ) \ HERE before it, put back afterwards
 : OPENER?  ( xt -- xt f )
   DUP ['] IF = OVER ['] BEGIN = OR OVER ['] DO = OR OVER ['] ?DO = OR ;
 : TEMP-BEGIN  ( xt -- xt )  \ xt is still on the stack: DEPTH counts it (the +1)
-  HERE TEMP-START !  'DOCOL JSR-IP CF,  DEPTH TEMP-DEPTH !  ] ;
+  HERE TEMP-HERE !  ALIGN HERE TEMP-START !  'DOCOL JSR-IP CF,  DEPTH TEMP-DEPTH !  ] ;
 : TEMP-END?  ( -- )  \ structure closed: run it, forget it
   TEMP-DEPTH @ IF DEPTH 1+ TEMP-DEPTH @ = IF
-    ['] EXIT ,  POSTPONE [  0 TEMP-DEPTH !  TEMP-START @ DUP DP ! EXECUTE
+    ['] EXIT ,  POSTPONE [  0 TEMP-DEPTH !  TEMP-HERE @ DP !  TEMP-START @ EXECUTE
   THEN THEN ;
 : INTERPRET  ( -- )
   BEGIN PARSE-NAME DUP WHILE
@@ -24,13 +25,13 @@ VARIABLE TEMP-START  ( -- a )
       NIP NIP DUP NAME> SWAP C@
       STATE @ IF 128 AND IF EXECUTE ELSE , THEN
       ELSE 64 AND IF OPENER? 0= IF -14 THROW THEN TEMP-BEGIN THEN EXECUTE THEN
-    ELSE NUMBER? IF STATE @ IF POSTPONE LITERAL THEN ELSE -13 THROW THEN THEN
+    ELSE NUMBER THEN
     ?STACK TEMP-END?
   REPEAT 2DROP ;
-: EVALUATE  ( a u -- )
-  SRC 2@ 2>R  >IN @ >R  BLK @ >R  SOURCE-ID @ >R
-  SRC 2!  0 >IN !  0 BLK !  -1 SOURCE-ID !  INTERPRET
-  R> SOURCE-ID !  R> BLK !  R> >IN !  2R> SRC 2! ;
+: EVALUATE  ( a u -- )  \ CORE, BLOCK
+  SRC 2@ 2>R  >IN @ >R  BLK @ >R  SRC-ID @ >R
+  SRC 2!  0 >IN !  0 BLK !  -1 SRC-ID !  INTERPRET
+  R> SRC-ID !  R> BLK !  R> >IN !  2R> SRC 2! ;
 
 \ ---- reverse lookup: which word holds an address -----------------------------------
 VARIABLE BEST  ( -- a )
@@ -84,33 +85,38 @@ VARIABLE DISARMED  ( -- a ) \ vector DISARM put back, -1 = none
   DUP -15 = IF DROP ." cannot forget kernel words" EXIT THEN
   DUP -16 = IF DROP ." name expected" EXIT THEN
   DUP -19 = IF DROP ." name longer than 31 characters" EXIT THEN
+  DUP -21 = IF DROP ." unsupported operation (a DEFER without an action?)" EXIT THEN
   DUP -22 = IF DROP ." unbalanced control structure" EXIT THEN
   DUP -23 = IF DROP ." odd address for a word access" EXIT THEN
   DUP -28 = IF DROP ." interrupted by ^C" EXIT THEN
   DUP -33 = IF DROP ." block read error" EXIT THEN
   DUP -34 = IF DROP ." block write error" EXIT THEN
   DUP -35 = IF DROP ." no such block" EXIT THEN
+  DUP -49 = IF DROP ." search-order overflow" EXIT THEN
+  DUP -50 = IF DROP ." search-order underflow" EXIT THEN
   DUP -256 = IF DROP .TRAP EXIT THEN
   ." error " . ;
 : .ERROR  ( code -- )  \ Error: what: word [in block b line l]
   CR ." Error: " .ERROR-TEXT  ." : " WHAT 2@ TYPE
-  BLK @ IF ."  in block " BLK @ . ." line " >IN @ 1- 0 MAX 64 / . THEN CR ;
+  ERR-BLK @ IF ."  in block " ERR-BLK @ . ." line " ERR-IN @ 1- 0 MAX 64 / . THEN CR ;
 : UNLINK  ( lfa -- )  \ the newest header of CURRENT leaves, HERE goes back to it
   DUP @ OVER 2+ C@ CURRENT @ SWAP CHAIN !  DP !  CURRENT @ NEWEST 2+ LAST ! ;
 : DISCARD-DEFINITION  ( -- )  \ a definition cut short leaves nothing behind
   STATE @ IF COLON-LFA @ ?DUP IF UNLINK THEN THEN
-  0 COLON-LFA !  TEMP-DEPTH @ IF TEMP-START @ DP !  0 TEMP-DEPTH ! THEN ;
+  0 COLON-LFA !  TEMP-DEPTH @ IF TEMP-HERE @ DP !  0 TEMP-DEPTH ! THEN ;
+: CONTEXT-AFTER-ERROR  ( -- )  \ FORTH-79: CONTEXT := CURRENT; an empty order: the boot one
+  #ORDER @ 0= IF ONLY ALSO THEN  CURRENT @ CONTEXT ! ;
 : RESET-AFTER-ERROR  ( -- )
-  DISCARD-DEFINITION  POSTPONE [  0 BLK !  0 SOURCE-ID !  CURRENT @ CONTEXT !
+  DISCARD-DEFINITION  POSTPONE [  0 BLK !  0 SRC-ID !  CONTEXT-AFTER-ERROR
   'ON-ERROR @ ?DUP IF EXECUTE THEN  S0 SP!  0 PRIORITY! ;
 
 \ ---- QUIT --------------------------------------------------------------------------
 : .LOST  ( -- )  \ say so when the console ring overflowed
   RXLOST @ ?DUP IF CR U. ." characters lost: typed too far ahead" CR  0 RXLOST ! THEN ;
-: QUERY  ( -- )  \ a line from the terminal becomes the source
-  TIB TIB-SIZE 1- ACCEPT  TIB SWAP SRC 2!  0 >IN !  0 BLK !  0 SOURCE-ID !  SPACE .LOST ;
+: QUERY  ( -- )  \ CORE EXT: a line from the terminal becomes the source
+  TIB TIB-SIZE 1- ACCEPT  TIB SWAP SRC 2!  0 >IN !  0 BLK !  0 SRC-ID !  SPACE .LOST ;
 : INTERPRET-LINE  ( -- )  QUERY INTERPRET ;
-: QUIT  ( -- )  \ read, interpret, report: forever
+: QUIT  ( -- )  \ CORE: read, interpret, report: forever
   RP0 RP!  0 HANDLER !  POSTPONE [  0 BLK !  0 PRIORITY!
   BEGIN
     ['] INTERPRET-LINE CATCH ?DUP IF .ERROR RESET-AFTER-ERROR ELSE ."  ok" CR THEN

@@ -1,10 +1,10 @@
 \ forth/kernel/tools.fs: .S WORDS DUMP SEE, FORGET and MARKER.
 
-: .S  ( -- )  \ the stack, deepest first
+: .S  ( -- )  \ TOOLS: the stack, deepest first
   ." <" DEPTH 0 .R ." > "  DEPTH DUP 0 ?DO DUP I - PICK . LOOP DROP ;
 VARIABLE COLUMN  ( -- a )
 CREATE CURSORS 8 ALLOT  ( -- a ) \ WORDS' place in each chain
-: WORDS  ( -- )  \ the CONTEXT vocabulary, newest first (its chains merged)
+: WORDS  ( -- )  \ TOOLS: the CONTEXT vocabulary, newest first (its chains merged)
   0 COLUMN !  CONTEXT @ CURSORS 8 CMOVE
   BEGIN CURSORS NEWEST-SLOT ?DUP WHILE
     DUP @ DUP 2+ C@ 32 AND 0= IF
@@ -12,7 +12,7 @@ CREATE CURSORS 8 ALLOT  ( -- a ) \ WORDS' place in each chain
       DUP 2+ DUP .NAME SPACE C@ 31 AND 1+ COLUMN +!
     THEN @ SWAP !
   REPEAT ;
-: DUMP  ( a u -- )  \ bytes in BASE, then as characters
+: DUMP  ( a u -- )  \ TOOLS: bytes in BASE, then as characters
   OVER + SWAP ?DO
     CR I 6 U.R ." : "  I 16 + I ?DO I C@ 4 U.R LOOP  SPACE
     I 16 + I ?DO I C@ DUP BL 127 WITHIN 0= IF DROP [CHAR] . THEN EMIT LOOP
@@ -29,12 +29,13 @@ CREATE CURSORS 8 ALLOT  ( -- a ) \ WORDS' place in each chain
   DUP BEGIN  ( far a )
     DUP @  ( far a xt )
     DUP ['] (LIT) = IF DROP 2+ DUP @ . ELSE  DUP .XT
+    DUP LOCAL-OPERAND? IF DROP 2+ DUP @ . ELSE
     DUP INLINE-STRING? IF DROP 2+ DUP COUNT TYPE [CHAR] " EMIT SPACE DUP C@ + 1- ALIGNED
     ELSE DUP BRANCHING? IF DROP 2+ DUP @ DUP ." ->" .OCTAL SPACE ROT UMAX SWAP
-    ELSE ['] EXIT = IF 2DUP SWAP U< 0= IF 2DROP EXIT THEN THEN THEN THEN THEN
+    ELSE ['] EXIT = IF 2DUP SWAP U< 0= IF 2DROP EXIT THEN THEN THEN THEN THEN THEN
     2+
   AGAIN ;
-: SEE  ( "name" -- )
+: SEE  ( "name" -- )  \ TOOLS
   TICK CR DUP >NAME ?DUP IF .NAME SPACE THEN
   DUP @ JSR-IP = OVER 2+ @ 'DOCOL = AND IF ." is : " 4 + SEE-COLON ." ;" CR EXIT THEN
   DUP @ JSR-W = IF DUP 2+ @
@@ -60,10 +61,11 @@ CREATE CURSORS 8 ALLOT  ( -- a ) \ WORDS' place in each chain
 : (FORGET)  ( lfa -- )  \ remove every word from lfa up
   DUP FENCE @ U< IF -15 THROW THEN
   DUP RESTORE-VECTORS  DUP TRIM-VOCS
-  CONTEXT @ OVER U< 0= IF FORTH-BODY CONTEXT ! THEN
+  #ORDER @ 2* CONTEXT + CONTEXT ?DO  \ forgotten word lists leave the search order
+    I @ OVER U< 0= IF FORTH-BODY I ! THEN  2 +LOOP
   CURRENT @ OVER U< 0= IF FORTH-BODY CURRENT ! THEN
   DP !  CURRENT @ NEWEST 2+ LAST ! ;
-: FORGET  ( "name" -- )
-  PARSE-NAME CURRENT @ OVER CHAIN @ (FIND) ?DUP 0= IF -13 THROW THEN 2- (FORGET) ;
-: MARKER  ( "name" -- )  ALIGN HERE CREATE , DOES> @ (FORGET) ;
-: ENVIRONMENT?  ( a u -- false )  2DROP FALSE ;
+: FORGET  ( "name" -- )  \ TOOLS EXT
+  PARSE-NAME 2DUP CURRENT @ WID-FIND ?DUP 0= IF WHAT 2! -13 THROW THEN
+  NIP NIP 2- (FORGET) ;
+: MARKER  ( "name" -- )  ALIGN HERE CREATE , DOES> @ (FORGET) ;  \ CORE EXT

@@ -12,10 +12,18 @@ decimal
 $400 tdp !    \ ORIGIN 002000: vectors and stubs below, filled at the end
 s" forth/kernel/memory.fs" kernel
 s" forth/kernel/prims.fs" kernel
+s" EXIT" tcfa-of exit-cfa !   \ the primitive, for ; (compile.fs)
 s" forth/kernel/core.fs" kernel
 s" forth/kernel/interp.fs" kernel
 s" forth/kernel/quit.fs" kernel
 s" forth/kernel/tools.fs" kernel
+s" forth/kernel/search.fs" kernel
+s" forth/kernel/coreext.fs" kernel
+s" forth/kernel/double.fs" kernel
+s" forth/kernel/string.fs" kernel
+s" forth/kernel/toolsext.fs" kernel
+s" forth/kernel/facility.fs" kernel
+s" forth/kernel/heap.fs" kernel
 s" forth/kernel/disk.fs" file-exists? [if]
   s" forth/kernel/disk.fs" kernel
 [else]
@@ -25,6 +33,7 @@ s" forth/kernel/editor.fs" file-exists? [if]  s" forth/kernel/editor.fs" kernel 
 s" forth/asm-target.fs" kernel   \ vocabulary ASSEMBLER (the ASSEMBLER helper's binding)
 s" forth/kernel/code.fs" kernel
 s" forth/kernel/boot.fs" kernel
+s" forth/kernel/locals.fs" kernel   \ last: its IMMEDIATE EXIT shadows the primitive
 
 \ ---- finish: resolve, initialise the kernel's variables, vectors ---------------
 : fail ( addr u -- )  cr type cr 1 (bye) ;
@@ -45,12 +54,12 @@ tvoc-link @ body! VOC-LINK
     voc-next @ repeat ;
 write-heads
 \ vector v -> STUBS+v at priority 7; stub: JSR R0,@#TRAPPED, except the
-\ console receiver (JMP @#RXINT) and the line clock (RTI)
+\ console receiver (JMP @#RXINT) and the line clock (JMP @#TICK: counts ticks)
 : fill-vectors ( -- )
   $200 0 do
     [lbl] STUBS i + i t!  $E0 i 2 + t!
     i $30 = if $5F [lbl] STUBS i + t!  [lbl] RXINT [lbl] STUBS i + 2 + t! else
-    i $40 = if 2 [lbl] STUBS i + t!  $A0 [lbl] STUBS i + 2 + t! else
+    i $40 = if $5F [lbl] STUBS i + t!  [lbl] TICK [lbl] STUBS i + 2 + t! else
       $081F [lbl] STUBS i + t!  [lbl] TRAPPED [lbl] STUBS i + 2 + t! then then
   4 +loop ;
 fill-vectors

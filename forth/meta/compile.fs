@@ -13,13 +13,18 @@
 : t-string ( addr u -- )  \ counted string inline in the thread, padded to even
   dup tc, bounds ?do i c@ tc, loop talign ;
 
+\ the primitive EXIT, captured after prims.fs (build.fs): locals.fs later defines an
+\ IMMEDIATE EXIT for programs (it drops a locals frame first), which ; must not call
+variable exit-cfa
+: exit, ( -- )  exit-cfa @ dup 0= if drop [t] EXIT then t, ;
+
 get-current  metac-wl set-current
 
 : ( ( "text<paren>" -- )  [char] ) parse 2drop ;
 : \ ( "line" -- )  source nip >in ! ;
 : [ ( -- )  tstate off ;
 : ; ( colon 4 -- )
-  [t] EXIT t,  4 pair?  $20 tunflag  tstate off ;
+  exit,  4 pair?  $20 tunflag  tstate off ;
 : IF ( -- orig )  [t] ?BRANCH t, >mark ;
 : ELSE ( orig -- orig' )  [t] BRANCH t, >mark 2swap >resolve ;
 : THEN ( orig -- )  >resolve ;

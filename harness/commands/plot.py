@@ -10,7 +10,8 @@ from harness.trace import AXES, TraceError, read
 NAME = "plot"
 HELP = "draw PNG/SVG figures from a plant trace (CSV from ATTACH PLANT)"
 ERRORS = (TraceError, PlotError)
-FIGURES = ("moves", "time", "zero")
+FIGURES = ("moves", "time", "zero")              # what "all" draws
+ON_REQUEST = ("xy", "gripper")                   # the continuation's, when named
 
 DESCRIPTION = """\
 Draw figures from a plant trace (the CSV that SIMH's ATTACH PLANT writes):
@@ -22,6 +23,12 @@ Draw figures from a plant trace (the CSV that SIMH's ATTACH PLANT writes):
   zero   the 0-Vel adaptation: the DAC code each idle axis is held at, against
          time, beside the plant's true zero (2048 + offset) computed from the
          trace (dac - vcmd/Kv) and, with --offset, the value you give.
+  xy     (only when named) the x-y path traced by the counters against the
+         straight segments through the --via points (the start point first),
+         with each segment's largest deviation and each via point's closest
+         approach and the speed there (docs/continuation.md).
+  gripper  (only when named) the gripper's opening, contact switch and
+         missed steps against time.
 
 Files are named STEM-moves-X.png, STEM-time.svg, ... where STEM is the trace's
 path without .csv, or --out. Each file is written whole or not at all; nothing
@@ -61,11 +68,21 @@ def offset(text):
     raise argparse.ArgumentTypeError(f"{text!r}: expected AXIS=CODES, e.g. Z=45")
 
 
+def point(text):
+    """X,Y in counts."""
+    try:
+        x, y = (int(v) for v in text.split(","))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r}: expected X,Y in counts, "
+                                         "e.g. 3200,0") from None
+    return x, y
+
+
 def configure(parser):
     parser.description = DESCRIPTION
     parser.formatter_class = argparse.RawDescriptionHelpFormatter
     parser.add_argument("trace", metavar="TRACE", help="plant trace CSV")
-    parser.add_argument("--figure", choices=FIGURES + ("all",), default="all",
+    parser.add_argument("--figure", choices=FIGURES + ON_REQUEST + ("all",), default="all",
                         help="which figure (default all). moves: one per axis that has "
                         "moves (with --axis, each axis named must have one)")
     parser.add_argument("--axis", type=axis_letters, metavar="AXES",
@@ -95,6 +112,9 @@ def configure(parser):
     parser.add_argument("--min-travel", type=positive, default=mv.MIN_TRAVEL,
                         metavar="COUNTS", help="shortest motion counted as a move "
                         f"(default {mv.MIN_TRAVEL:g} counts)")
+    parser.add_argument("--via", type=point, action="append", default=[], metavar="X,Y",
+                        help="xy figure: the path's start point, then each via point, "
+                        "counts; repeat in order")
     parser.set_defaults(run=run)
 
 
@@ -144,6 +164,11 @@ def build_figures(args):
         out.append((plots.zero_figure(trace, axes, args.window, dict(args.offset),
                                       args.kv, args.v_idle, args.hold),
                     _paths(stem, "zero", args.format)))
+    if args.figure in ON_REQUEST:
+        from harness import path_plots
+        fig = (path_plots.xy_figure(trace, args.via, args.window) if args.figure == "xy"
+               else path_plots.gripper_figure(trace, args.window))
+        out.append((fig, _paths(stem, args.figure, args.format)))
     return out
 
 

@@ -141,11 +141,25 @@ def console_reader(count):
     return p.halt()
 
 
+def gripper_steps(count, close, spacing):
+    """`count` STEP pulses on DRV11 OUTBUF bit 4 (DIR bit 5 = close), `spacing`
+    SOB iterations apart, counter run lines 17 kept; then the CSR to 2000."""
+    dir_bit = 0o40 if close else 0
+    p = Program()
+    p.op(f"MOV #{count:o},R2", 0o012702, count)
+    top = p.here
+    p.mov_imm(0o17 | dir_bit, DRV_OUT).mov_imm(0o37 | dir_bit, DRV_OUT)
+    p.mov_imm_reg(spacing, 0).sob_self(0)
+    p.op(f"SOB R2,{top:o}", 0o077200 | ((p.here + 2 - top) // 2))
+    p.mov_abs(DRV_CSR, R[0])
+    return p.halt()
+
+
 def all_programs():
     return {
         "lks_bits": lks_bits(), "clock_counter": clock_counter(),
         "drv_bits": drv_bits(), "drv_interrupts": drv_interrupts(0o140),
         "aav_bits": aav_bits(), "dac_step": dac_step([0o4144, 0o4144, 0o4144, 0o4144], 0o17),
         "counter_wrap": counter_wrap(), "rl_write_read": rl_write_read(),
-        "console_reader": console_reader(10),
+        "console_reader": console_reader(10), "gripper_steps": gripper_steps(5, True, 100),
     }

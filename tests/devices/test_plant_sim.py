@@ -98,7 +98,7 @@ def test_same_program_same_trace_byte_for_byte(tmp_path):
     traced_run(tmp_path, codes, 2.001, sample=60, name="b.csv")
     traced_run(tmp_path, codes, 2.001, "set plant seed=7\n", sample=60, name="c.csv")
     a, b, c = ((tmp_path / n).read_bytes() for n in ("a.csv", "b.csv", "c.csv"))
-    assert a.startswith(b"time_s,axis,dac,vcmd,vel,pos,counter\n")
+    assert a.startswith(b"time_s,axis,dac,vcmd,vel,pos,counter,grip,contact,missed\n")
     assert len(a.splitlines()) == 1 + 4 * 120 + 4        # header, samples, the program's writes
     assert a == b
     assert a != c                                     # the walk follows the seed

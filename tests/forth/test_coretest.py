@@ -7,29 +7,18 @@ from pathlib import Path
 import pytest
 
 from harness.machine import Machine
+from tests.forth.suite import SuiteResult, assert_passed, feed, load_tester, totals
 
 CORETEST = Path("/usr/share/gforth/0.7.3/test/coretest.fs")
-TESTER = Path(__file__).with_name("tester.fs")
 
 
 def test_hayes_core_test():
     if not CORETEST.exists():
         pytest.fail(f"{CORETEST} missing: install gforth (bash mk/apt-need.sh gforth)")
+    result = SuiteResult()
     with Machine() as m:
-        for line in TESTER.read_text().splitlines():
-            m.send(line)
-        failed_lines, errors = [], []
-        for n, line in enumerate(CORETEST.read_text(encoding="latin-1").splitlines(), 1):
-            r = m.reply(line)
-            if not r.ok:
-                errors.append(f"{n}: {line.strip()} -> {r.error}")
-            if "TEST FAILED" in r.output:
-                failed_lines.append(f"{n}: {r.output.strip()}")
-        m.send("DECIMAL")  # the core test leaves BASE at 16
-        tests = int(m.send("#TESTS @ .").split()[0])
-        failed = int(m.send("#FAILED @ .").split()[0])
-    print(f"\nHayes core test: {tests} tests, {failed} failed, "
-          f"{len(errors)} lines with errors")
-    assert not errors, "\n".join(errors[:20])
-    assert failed == 0 and not failed_lines, "\n".join(failed_lines[:20])
-    assert tests > 300
+        load_tester(m)
+        text = CORETEST.read_text(encoding="latin-1").splitlines()
+        feed(m, "coretest.fs", enumerate(text, 1), result)
+        totals(m, result)
+    assert_passed(result, "Hayes core test", at_least=300)

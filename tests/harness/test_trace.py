@@ -11,7 +11,8 @@ GOOD_ROW = "0.016666667,X,2148,1894.410,1070.820,10.144,10"
 def test_real_trace_reads_whole(servo_trace):
     tr = trace.read(servo_trace)
     lines = servo_trace.read_text().splitlines()
-    assert lines[0] == ",".join(HEADER)
+    assert lines[0] == ",".join(HEADER + trace.GRIPPER_COLUMNS)
+    assert tr.gripper is not None and tr.gripper.opening[0] == 2.0   # power-up: open
     assert tr.axes == "XYZT"
     assert sum(len(s) for s in tr.series.values()) == len(lines) - 1
     x = tr.axis("x")
@@ -29,6 +30,13 @@ def test_window_keeps_rows_in_span(servo_trace):
     w = x.window(0.5, 1.0)
     assert len(w) > 0 and w.time.min() >= 0.5 and w.time.max() <= 1.0
     assert len(x.window()) == len(x)
+
+
+def test_trace_without_gripper_columns_reads(tmp_path):
+    path = tmp_path / "old.csv"
+    path.write_text(",".join(HEADER) + "\n" + GOOD_ROW + "\n")
+    tr = trace.read(path)
+    assert tr.gripper is None and tr.axis("X").counter[0] == 10
 
 
 def test_absent_axis_is_named():
@@ -50,6 +58,9 @@ def test_absent_axis_is_named():
     (",".join(HEADER) + "\n0.1,X,2048,0,0,0,40000\n", "line 2: counter is '40000'"),
     (",".join(HEADER) + "\n0.2,X,2048,0,0,0,0\n0.1,X,2048,0,0,0,0\n", "line 3: time 0.1 goes back"),
     (",".join(HEADER) + "\n-1,X,2048,0,0,0,0\n", "line 2: time_s is '-1'"),
+    (",".join(HEADER + trace.GRIPPER_COLUMNS) + "\n" + GOOD_ROW + "\n", "7 fields, expected 10"),
+    (",".join(HEADER + trace.GRIPPER_COLUMNS) + "\n" + GOOD_ROW + ",2.5,0,0\n",
+     "line 2: grip is '2.5'"),
 ])
 def test_bad_traces_say_what_and_where(tmp_path, text, message):
     path = tmp_path / "bad.csv"

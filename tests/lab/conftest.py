@@ -11,9 +11,11 @@ ARTIFACTS = ROOT / "build" / "test-artifacts"
 
 
 @pytest.fixture(scope="module")
-def lab_server(tmp_path_factory):
-    """A lab server for the module; stopped with ^C unless a test ended it (BYE)."""
-    server = LabProcess(tmp_path_factory.mktemp("lab"))
+def lab_server(request, tmp_path_factory):
+    """A lab server for the module, at the module's LAB_SPEED (default full);
+    stopped with ^C unless a test ended it (BYE)."""
+    speed = getattr(request.module, "LAB_SPEED", "full")
+    server = LabProcess(tmp_path_factory.mktemp("lab"), speed=speed)
     yield server
     status = server.stop()
     assert status == 0, f"the lab exited with {status}:\n{server.text()}"

@@ -7,6 +7,11 @@ from selenium.webdriver.common.by import By
 
 from conftest import ARTIFACTS, wait_for
 
+# Until Set.Up.Robot the axes drift on their zero offsets (y at +39 counts/s): at
+# full speed the seconds a loaded host takes to start the browser would put y on
+# its upper stop, and the move could not take it 800 counts further.
+LAB_SPEED = "x10"
+
 
 @pytest.fixture(scope="module")
 def page(lab_server, browser):
@@ -51,10 +56,15 @@ def test_a_move_shows_on_the_robot_and_the_scope(page):
     type_line(page, "800 800 400 0 Abs.Move")
     assert wait_for("Desire.Pos to follow the move",
                     lambda: js(page, "window.lab.servo['Desire.Pos']") == [800, 800, 400, 0])
-    wait_for("x, y, z to come near their targets", lambda: js(
-        page, "[800, 800, 400].every((t, a) => Math.abs(window.lab.latest[a][6] - t) < 60)"))
+    arrived = set()                                  # each axis, once it is there (it hunts)
+
+    def near():
+        counters = js(page, "window.lab.latest.map(r => r[6])")
+        arrived.update(a for a, t in enumerate((800, 800, 400)) if abs(counters[a] - t) < 60)
+        return len(arrived) == 3
+    wait_for("x, y, z to come near their targets", near)
     end = js(page, "window.lab.latest.map(r => r[5])")
-    assert all(abs(e - s - moved) < 80 for s, e, moved in zip(start, end, (800, 800, 400)))
+    assert all(abs(e - s - moved) < 150 for s, e, moved in zip(start, end, (800, 800, 400)))
     assert js(page, "document.getElementById('robot').toDataURL()") != robot_before
     click(page, "#pause")
     wait_for("the pause", lambda: js(page, "window.lab.status.state") == "pause")

@@ -9,6 +9,7 @@ from selenium.webdriver.common.by import By
 from conftest import wait_for
 from test_browser import click, js, type_line
 
+LAB_SPEED = "x10"                  # the axes drift until Set.Up.Robot: see test_browser.py
 pytestmark = pytest.mark.skipif(not os.environ.get("LAB_LONG"),
                                 reason="the long lab session runs with make test-lab-long")
 
@@ -22,7 +23,6 @@ def page(lab_server, browser):
 
 
 def test_blocks_load_at_real_pace(page):
-    assert js(page, "window.lab.status.speed") in ("real", "full")
     wait_for("real pace", lambda: js(page, "window.lab.status.speed") == "real")
     assert js(page, "Object.keys(window.lab.servo).length") == 0
     assert "Error" not in type_line(page, "1000 LOAD", timeout=300)

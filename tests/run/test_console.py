@@ -40,6 +40,15 @@ def block_text(disk, n):
     return disk.read_bytes()[1024 * n:1024 * n + 64]
 
 
+def expect_left_safely(child, disk, text):
+    """The console reported every block written, exited 0, and the block holds text."""
+    child.expect(FLUSHED)
+    child.expect(pexpect.EOF)
+    child.close()
+    assert child.exitstatus == 0
+    assert block_text(disk, BLOCK).startswith(text)
+
+
 def test_console_command_simh_prompt_and_bye_flushes(tmp_path):
     disk = tmp_path / "work.dsk"
     shutil.copyfile(PRISTINE, disk)
@@ -58,11 +67,7 @@ def test_console_command_simh_prompt_and_bye_flushes(tmp_path):
     write_block_word(child, "typed at the console")
     assert not block_text(disk, BLOCK).startswith(b"typed")  # still in a buffer
     child.send("BYE\r")
-    child.expect(FLUSHED)
-    child.expect(pexpect.EOF)
-    child.close()
-    assert child.exitstatus == 0
-    assert block_text(disk, BLOCK).startswith(b"typed at the console")
+    expect_left_safely(child, disk, b"typed at the console")
     assert (tmp_path / "t.csv").read_text().startswith("time_s,axis,")
 
 
@@ -79,11 +84,7 @@ def test_every_way_out_of_the_simh_prompt_flushes_first(tmp_path, keys, how):
     child.send(keys)
     if how:
         child.expect_exact(f"[console] {how}: leaving; the FORTH FLUSHes its blocks first")
-    child.expect(FLUSHED)
-    child.expect(pexpect.EOF)
-    child.close()
-    assert child.exitstatus == 0
-    assert block_text(disk, BLOCK).startswith(f"left with {keys!r}".encode())
+    expect_left_safely(child, disk, f"left with {keys!r}".encode())
 
 
 def test_ctrl_c_is_the_forths_until_sim_where_it_leaves_after_flush(tmp_path):
@@ -105,11 +106,7 @@ def test_ctrl_c_is_the_forths_until_sim_where_it_leaves_after_flush(tmp_path):
     child.send("\x03")                          # at sim>: SIMH would die of it
     child.expect_exact("[console] ^C at SIMH's prompt: leaving; the FORTH FLUSHes its "
                        "blocks first")
-    child.expect(FLUSHED)
-    child.expect(pexpect.EOF)
-    child.close()
-    assert child.exitstatus == 0
-    assert block_text(disk, BLOCK).startswith(b"left with control-C")
+    expect_left_safely(child, disk, b"left with control-C")
 
 
 def test_bye_while_a_word_runs_stops_it_with_ctrl_c_and_flushes(tmp_path):
@@ -121,11 +118,7 @@ def test_bye_while_a_word_runs_stops_it_with_ctrl_c_and_flushes(tmp_path):
     child.send("BYE\r")
     child.expect_exact("The FORTH was busy for 0.5 s: ^C stopped the running word so "
                        "that FLUSH could run.")
-    child.expect(FLUSHED)
-    child.expect(pexpect.EOF)
-    child.close()
-    assert child.exitstatus == 0
-    assert block_text(disk, BLOCK).startswith(b"written while busy")
+    expect_left_safely(child, disk, b"written while busy")
 
 
 def test_a_flush_that_fails_names_the_blocks_not_written(tmp_path):
@@ -190,3 +183,15 @@ def test_bye_after_the_disk_was_detached_says_so_and_names_the_lost_block(tmp_pa
     child.expect(pexpect.EOF)
     child.close()
     assert child.exitstatus == 1
+
+
+def test_the_bye_word_leaves_like_typed_bye(tmp_path):
+    """The FORTH's BYE word, inside a definition, halts the simulator at (BYE);
+    the console sees that halt, continues the FORTH, FLUSHes and detaches."""
+    disk = tmp_path / "work.dsk"
+    shutil.copyfile(PRISTINE, disk)
+    child = console(disk)
+    write_block_word(child, "left by the BYE word")
+    child.send(": LEAVE-NOW 1 . BYE ; LEAVE-NOW\r")
+    child.expect_exact("[console] the BYE word: leaving; the FORTH FLUSHes its blocks first")
+    expect_left_safely(child, disk, b"left by the BYE word")

@@ -34,6 +34,17 @@ def way_out(watcher, data):
     return way.value
 
 
+def test_the_halt_of_the_bye_word_leaves_even_split_over_reads():
+    w = LineWatcher(b"HALT instruction, PC: 043644")
+    assert w.output(b"1 \r\nHALT instruction, PC: 0436") == b"1 \r\nHALT instruction, PC: 0436"
+    with pytest.raises(Leave) as way:
+        w.output(b"44 (JMP @(R4)+)\r\nsim> ")
+    assert way.value.how == "the BYE word"
+    other = LineWatcher(b"HALT instruction, PC: 043644")   # another HALT is no way out
+    other.output(b"\r\nHALT instruction, PC: 001000 (HALT)\r\nsim> ")
+    assert other.at_simh
+
+
 def test_bye_and_ctrl_d_leave_anywhere_and_keep_what_was_typed_ahead():
     way = way_out(LineWatcher(), b"1 2 + .\r  bye\r")
     assert way.how == "BYE" and way.typed == b"1 2 + .\r  bye"

@@ -40,7 +40,7 @@ def test_two_runs_give_identical_files_and_leave_the_disk_alone(tmp_path):
     assert "1 2 + . 3  ok\n" in transcript and "9 SQ . 81  ok\n" in transcript
     assert "sim> show plant\nPLANT, seed=1983" in transcript
     assert str(tmp_path) not in transcript and "\r" not in transcript
-    assert outputs[0][1].startswith(b"time_s,axis,dac,vcmd,vel,pos,counter\n")
+    assert outputs[0][1].startswith(b"time_s,axis,dac,vcmd,vel,pos,counter,grip,contact,missed\n")
     assert hashlib.sha256(PRISTINE.read_bytes()).hexdigest() == before
 
 
@@ -59,6 +59,20 @@ def test_a_line_that_never_finishes_is_stopped_in_simulated_time(tmp_path):
     r = harness("run", script, "--line-limit", "0.5")
     assert r.returncode == 1
     assert f"{script}:2: the simulator stopped: no prompt within 0.5 simulated seconds" in r.stderr
+
+
+def test_bye_ends_the_session(tmp_path):
+    """The FORTH's BYE (FLUSH, then its HALT) ends a scripted run as it ends the
+    console: a clean end when it is the last line, a failure naming what was left."""
+    script = tmp_path / "s.script"
+    script.write_text("1 .\n: DONE 2 . BYE ; DONE\n")
+    r = harness("run", script)
+    assert r.returncode == 0, r.stderr
+    assert (tmp_path / "s.transcript").read_text().endswith(": DONE 2 . BYE ; DONE 2 ")
+    script.write_text("1 .\nBYE\n3 .\n")
+    r = harness("run", script)
+    assert r.returncode == 1
+    assert f"{script}:2: BYE ended the session; 1 later steps not run" in r.stderr
 
 
 RUNAWAY = ': LOOPY ( -- ) CR ." Error: made up" CR BEGIN AGAIN ;\nLOOPY\n2 3 + .\n'
