@@ -10,7 +10,8 @@
    same per CPU second of the simulator, which the host's other load moves less;
    and build/pdp11 with the LAB device attached (writing to /dev/null) against
    without, both without a browser: the device's own cost.
-Figures depend on the host and on what else runs on it; each is measured once.
+Figures depend on the host and on what else runs on it: the runs without the lab
+are the best of three; the lab's are one window each.
 """
 import os
 import re
@@ -28,7 +29,7 @@ RATE = 300_000
 WINDOW_S = 10.0
 SETUP = ("1000 LOAD", "Set.Up.Robot", "800 800 400 0 Abs.Move")
 SETUP_INSTRUCTIONS = 6_000_000        # 20 simulated seconds: the load, the set-up, the move
-BASELINE_INSTRUCTIONS = 300_000_000   # 1000 simulated seconds: a few host seconds
+BASELINE_INSTRUCTIONS = 150_000_000   # 500 simulated seconds: a few host seconds
 TICKS_PER_S = os.sysconf("SC_CLK_TCK")
 
 
@@ -122,13 +123,18 @@ def run_alone(tmp, instructions, extra=""):
     return wall, used.ru_utime + used.ru_stime - cpu.ru_utime - cpu.ru_stime
 
 
-def measure_alone(tmp, extra=""):
+def measure_alone(tmp, extra="", repeats=3):
     """The rate of build/pdp11 alone over the same phase as the lab's (the servo
     hunting after the move): a run to the end of the set-up, subtracted from a
-    run BASELINE_INSTRUCTIONS longer; per wall and per CPU second."""
-    wall0, cpu0 = run_alone(tmp, SETUP_INSTRUCTIONS, extra)
-    wall1, cpu1 = run_alone(tmp, SETUP_INSTRUCTIONS + BASELINE_INSTRUCTIONS, extra)
-    return BASELINE_INSTRUCTIONS / (wall1 - wall0), BASELINE_INSTRUCTIONS / (cpu1 - cpu0)
+    run BASELINE_INSTRUCTIONS longer; per wall and per CPU second, the best of
+    `repeats` (the host's other load only ever slows a run down)."""
+    best_wall = best_cpu = 0.0
+    for _ in range(repeats):
+        wall0, cpu0 = run_alone(tmp, SETUP_INSTRUCTIONS, extra)
+        wall1, cpu1 = run_alone(tmp, SETUP_INSTRUCTIONS + BASELINE_INSTRUCTIONS, extra)
+        best_wall = max(best_wall, BASELINE_INSTRUCTIONS / (wall1 - wall0))
+        best_cpu = max(best_cpu, BASELINE_INSTRUCTIONS / (cpu1 - cpu0))
+    return best_wall, best_cpu
 
 
 def main():
@@ -154,8 +160,8 @@ def main():
           f"{100 * (1 - lab_cpu / alone_cpu):+.1f} %")
     print(f"the LAB device alone (attached, full speed, its rows written), same conditions: "
           f"{device_cpu / 1e6:.2f} against {alone_cpu / 1e6:.2f} M instructions per CPU second, "
-          f"{100 * (1 - device_cpu / alone_cpu):+.1f} %; the rest of the drop above is the "
-          f"browser and the server sharing this {os.cpu_count()}-core host")
+          f"{100 * (1 - device_cpu / alone_cpu):+.1f} % (best of three each; on a shared host "
+          "runs of the same work differ by 10 % or more)")
     return 0
 
 
