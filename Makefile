@@ -1,7 +1,7 @@
 # Top-level Makefile: the 1983 Cartesian robot on an emulated PDP-11/23.
 #   make        build everything (simulator, FORTH kernel, disk image)
 #   make run    the interactive FORTH console
-#   make test   the test suite (pytest)
+#   make test   the test suite (pytest, in parallel: one worker per core)
 #   make bench  benchmarks, printing their figures
 # Each part has its own fragment in mk/; fragments add to ALL_PRODUCTS and BENCHES.
 SHELL := /bin/bash
@@ -18,7 +18,7 @@ include $(filter-out mk/simh.mk mk/python.mk,$(wildcard mk/*.mk))
 all: $(ALL_PRODUCTS)
 
 test: all venv
-	@$(PY) -m pytest -q -rs tests
+	@$(PY) -m pytest -q -rs -n auto --dist loadscope tests
 
 bench: all venv $(BENCHES)
 

@@ -19,26 +19,38 @@ from pathlib import Path
 
 import pexpect
 
-from harness import block_buffers
+from harness import block_buffers, pty_child
 from harness.console_watch import Leave, LineWatcher
 from harness.disk import block_ranges
 from harness.scripted_machine import ScriptError, read_kernel_map
 from harness.simh import MACHINE_INI
 
 KERNEL = Path(__file__).resolve().parent.parent / "build" / "kernel.lda"
-THROTTLE = "set throttle 300K"     # the KDF11-A's rate, as SET CLK RATE's default
+# the 11/23's pace (CLK RATE, 300K instructions/s) from the first instruction; SIMH's
+# SET THROTTLE cannot pace the kernel's WAIT (pdp11-devices/kw11l.c)
+REALTIME = "set clk realtime"
+# --fast: full speed while the FORTH works; while KEY WAITs the KW11-L sleeps the
+# host at the 11/23's pace (pdp11-devices/kw11l.c), so an idle prompt costs little
+IDLE = "set cpu idle"
+# The amplifier rack starts switched off, as the lab's operator left it: the axes
+# stand still (z's brake on) however long the blocks take to load or the user
+# waits; it is switched on once Set.Up.Robot's servo holds them (README).
+RACK_OFF = "set plant power=off"
 CTRL_C, CTRL_E, CTRL_U = b"\x03", b"\x05", b"\x15"
 BUSY_WAIT = 3                      # wall seconds a running word gets before ^C stops it
 FLUSH_WAIT = 60                    # wall seconds the FORTH gets to answer FLUSH
 HINT = ("Console: leave with BYE (or ^D; ^C or QUIT at sim> too): the FORTH FLUSHes its "
         "blocks and the disk is detached. ^E gives SIMH's sim> prompt (SHOW PLANT, then "
         "CONT to come back).")
+RACK_HINT = ("The amplifier rack starts OFF: the axes stand still. After Set.Up.Robot, "
+             "switch it on: ^E, then SET PLANT POWER=ON, then CONT.")
 SIMH_ERROR = re.compile(r"(Unit not attached|Non-existent[^\r\n]*|[A-Z][^\r\n]*error[^\r\n]*)")
 
 
 def boot_script(disk, trace=None, fast=False, kernel=KERNEL):
     return (f"do {MACHINE_INI}\n"
-            + ("" if fast else THROTTLE + "\n")
+            + (IDLE if fast else REALTIME) + "\n"
+            + RACK_OFF + "\n"
             + f"attach rl0 {Path(disk).resolve()}\n"
             + (f"attach plant {Path(trace).resolve()}\n" if trace else "")
             + f"load {kernel}\n"
@@ -200,6 +212,7 @@ def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BU
         pace = "full speed" if fast else "real-time pace (300K instructions/s)"
         print(f"[console] booting the FORTH on the PDP-11/23, {pace}, disk {disk}")
         print(f"[console] {HINT}")
+        print(f"[console] {RACK_HINT}")
         sys.stdout.flush()
         size = os.get_terminal_size() if sys.stdout.isatty() else os.terminal_size((80, 24))
         child = pexpect.spawn(str(simulator), [str(ini)], timeout=None,
@@ -217,7 +230,7 @@ def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BU
             say(*gone.report(), "Bye.")
             return 0 if gone.safe else 1
         finally:
-            child.close(force=True)
+            pty_child.close(child)
         say("the simulator exited on its own: blocks UPDATEd since the last FLUSH, if "
             f"any, were not written to {disk}")
         return 1

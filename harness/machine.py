@@ -18,6 +18,7 @@ from pathlib import Path
 
 import pexpect
 
+from harness import pty_child
 from harness.disk import RL02_BYTES
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -144,7 +145,7 @@ class Machine:
                 self.child.expect(pexpect.EOF, timeout=5)
             except (pexpect.TIMEOUT, pexpect.EOF, OSError):
                 pass
-            self.child.close(force=True)
+            pty_child.close(self.child)
         self._tmp.cleanup()
 
     def __enter__(self):

@@ -15,7 +15,9 @@ Definitions (docs/plots.md explains them with the figures):
   code held before it (the servo holds 0-Vel: the axis has arrived) and resumes
   where the code leaves it again, so a servo that hunts about its target, never
   letting the axis go idle, still has its move apart from the corrections after.
-  A *move* is a stretch whose travel (|D3 - D0|) is at least min_travel counts
+  A *move* is a stretch the servo commanded (its DAC leaves 0-Vel in the
+  direction of travel: z falling onto its stop at power-up, DAC at 2048 and no
+  servo, is not one) whose travel (|D3 - D0|) is at least min_travel counts
   (default 50); shorter stretches are corrections (a drifting axis pulled back).
 - The servo's *commanded velocity in DAC codes* is dac - 0-Vel, signed in the
   direction of travel. The trace has no 0-Vel column, but an idle axis is held at
@@ -26,13 +28,17 @@ Definitions (docs/plots.md explains them with the figures):
 - D0: the position just before the move (the row before it: idle, or held at 0-Vel).
   D1: the position where the commanded velocity (in codes) first reaches its
       largest value in the move (the paper: "Vel = MaxVel").
-  D2: the position where it is last at that value; after D2 it falls with the
-      distance left (the paper: "Vel > (D3 - D2)").
+  D2: the position where it stops being at that value, the row where the code
+      first changes after its last row at the peak: from D2 the command falls
+      with the distance left (the paper: "Vel > (D3 - D2)"). A peak held for one
+      tick thus has D2 a tick of motion beyond D1, not on top of D0.
   D3: the position where the axis is when the servo next acts: the last row
       before the next stretch starts, or the trace's last row (then `settled`
       is False: the trace ends while the move is still under way).
-  A move that never reaches MaxVel (the paper's short move) has its largest
-  commanded velocity at one point, and D1 = D2 there.
+  MaxVel, as the trace shows it, is the largest commanded velocity of the
+  longest move; a *short* move is one whose largest command stays below it (the
+  paper's "the maximum velocity is never reached"). The 1983 servo starts every
+  move at full speed, so its traces may have no short move at all.
 """
 from dataclasses import dataclass
 
@@ -120,11 +126,15 @@ def find_moves(series, v_idle=V_IDLE, min_travel=MIN_TRAVEL):
         direction = 1 if d3 > d0 else -1
         codes = (series.dac[first:last + 1] - zero) * direction
         peak = int(codes.max())
+        if peak <= 0:
+            continue                      # drift: the servo did not command it
         at_peak = np.flatnonzero(codes == peak) + first
+        changed = np.flatnonzero(series.dac[at_peak[-1] + 1:rest + 1] != series.dac[at_peak[-1]])
+        end_of_peak = at_peak[-1] + 1 + int(changed[0]) if len(changed) else rest
         found.append(Move(series.axis, first, last, rest, zero, direction, peak,
                           float(series.time[first]), float(series.time[last]),
                           float(d0), float(series.pos[at_peak[0]]),
-                          float(series.pos[at_peak[-1]]), float(d3), rest > last))
+                          float(series.pos[end_of_peak]), float(d3), rest > last))
     return found
 
 
@@ -135,13 +145,14 @@ def moves_between(moves, start=None, end=None):
 
 
 def long_and_short(moves):
-    """The longest move and, when there is a shorter one, the shortest: the two
-    cases of the paper's Figure 2 (left: normal, right: short)."""
+    """(longest, short): the two cases of the paper's Figure 2 (left: normal,
+    right: short). `short` is the shortest move whose peak stays below the
+    longest's (MaxVel), or None when every move reaches MaxVel."""
     if not moves:
-        return []
+        return None, None
     longest = max(moves, key=lambda m: m.travel)
-    shortest = min(moves, key=lambda m: m.travel)
-    return [longest] if shortest is longest else [longest, shortest]
+    below = [m for m in moves if m.peak_code < longest.peak_code]
+    return longest, (min(below, key=lambda m: m.travel) if below else None)
 
 
 def held_mask(series, v_idle=V_IDLE, hold=HOLD):

@@ -36,15 +36,21 @@ def _window_text(start, end):
 
 
 def pick_moves(series, windows=(), v_idle=mv.V_IDLE, min_travel=mv.MIN_TRAVEL):
-    """The moves to draw: with no windows, the longest and the shortest; with
-    windows, the longest move starting in each window."""
+    """[(move, label)] to draw: with no windows, the longest move and the short
+    one (harness/moves.py: below MaxVel) when there is one; with windows, the
+    longest move starting in each window."""
     found = mv.find_moves(series, v_idle, min_travel)
     if not found:
         raise PlotError(f"no moves on axis {series.axis}: no stretch of motion "
                         f"(|vcmd| or |vel| >= {v_idle:g} counts/s) travels "
                         f"{min_travel:g} counts or more")
     if not windows:
-        return mv.long_and_short(found)
+        longest, short = mv.long_and_short(found)
+        chosen = [(longest, "long move")]
+        if short:
+            chosen.append((short, f"short move (peak below the long move's "
+                                  f"{longest.peak_code} codes)"))
+        return chosen
     chosen = []
     for start, end in windows:
         inside = mv.moves_between(found, start, end)
@@ -52,7 +58,8 @@ def pick_moves(series, windows=(), v_idle=mv.V_IDLE, min_travel=mv.MIN_TRAVEL):
             raise PlotError(f"no move on axis {series.axis} starts in "
                             f"{_window_text(start, end)}; moves start at "
                             + ", ".join(f"{m.t0:.3f}" for m in found) + " s")
-        chosen.append(max(inside, key=lambda m: m.travel))
+        chosen.append((max(inside, key=lambda m: m.travel),
+                       f"move starting in {_window_text(start, end)}"))
     return chosen
 
 
@@ -94,14 +101,14 @@ def moves_figure(trace, axis, windows=(), v_idle=mv.V_IDLE, min_travel=mv.MIN_TR
     kv = kv if kv is not None else mv.estimate_kv(series)
     fig = Figure(figsize=(WIDTH * len(chosen), 4.8), layout="constrained")
     panels = fig.subplots(1, len(chosen), squeeze=False)[0]
-    if windows:
-        labels = [f"move starting in {_window_text(*w)}" for w in windows]
-    else:
-        labels = ["long move", "short move"][:len(chosen)]
-    for ax, move, label in zip(panels, chosen, labels):
+    for ax, (move, label) in zip(panels, chosen):
         _move_panel(ax, series, move, label, kv)
+    note = ""
+    if not windows and len(chosen) == 1:
+        note = (f"\nno short move: every move here peaks at the long move's "
+                f"{chosen[0][0].peak_code} codes above 0-Vel (MaxVel)")
     fig.suptitle(f"Axis {series.axis}: velocity against position "
-                 f"(the paper's Figure 2), {Path(trace.name).name}")
+                 f"(the paper's Figure 2), {Path(trace.name).name}{note}")
     return fig
 
 

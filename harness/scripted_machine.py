@@ -28,6 +28,7 @@ from pathlib import Path
 
 import pexpect
 
+from harness import pty_child
 from harness.simh import MACHINE_INI, PDP11, SimhError, examined
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -36,6 +37,12 @@ KERNEL_MAP = ROOT / "build" / "kernel.map"
 KERNEL_SYMBOLS = ("QUERY", "RXHEAD", "RXTAIL", "RING", "RING-MASK", "TIB-SIZE")
 
 PROMPT = "sim> "
+# WAIT (the kernel's KEY with an empty ring, e.g. during #wait) skips straight to
+# the next event instead of counting one instruction time per host loop: the same
+# simulated time and instruction counts, far less host work. SIMH's own switch (a
+# hidden CPU register). Not for the console: idle time there is paced to the
+# wall clock at the clock's ticks (pdp11-devices/kw11l.c), which this would skip.
+SKIP_WAITS = "deposit cpu wait_enable 1"
 # SIMH reports every stop as "\n<reason>, PC: <octal> (<instruction>)\n" then prompts.
 STOP = re.compile(r"\r\n([^\r\n]*), PC: ([0-7]+) \(([^\r\n]*)\)\r\nsim> ")
 EXAMINED = re.compile(r"([0-7]+):\s+([0-7]+)")
@@ -83,11 +90,14 @@ def read_kernel_map(path=KERNEL_MAP):
 def feed_commands(sym, text, head):
     """SIMH deposits that put `text` and its CR into the FORTH's console receive
     ring at index `head` (the ring must be empty: RXTAIL = RXHEAD = head) and
-    advance RXHEAD, exactly as the DL11 receive interrupt would have."""
+    advance RXHEAD, exactly as the DL11 receive interrupt would have; and, as
+    that interrupt would, end a WAIT the kernel's KEY sleeps in (after `#wait`
+    the machine stops there; the CPU then goes on to test the ring again)."""
     mask, ring = sym["RING-MASK"], sym["RING"]
     feed = [f"deposit -b {ring + ((head + i) & mask):o} {ord(c):o}"
             for i, c in enumerate(text + "\r")]
-    return feed + [f"deposit {sym['RXHEAD']:o} {(head + len(text) + 1) & mask:o}"]
+    return feed + [f"deposit {sym['RXHEAD']:o} {(head + len(text) + 1) & mask:o}",
+                   "deposit cpu wait 0"]
 
 
 FORTH_ERROR = re.compile(r"\r\nError: ([^\r\n]*)")
@@ -111,6 +121,7 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         self._feed = Path(self._tmp.name) / "feed.ini"
         ini = Path(self._tmp.name) / "boot.ini"
         ini.write_text(f"do {MACHINE_INI}\n"
+                       f"{SKIP_WAITS}\n"
                        f"attach rl0 {disk}\n"
                        + "".join(f"{c}\n" for c in settings)
                        + (f"attach plant {trace}\n" if trace else "")
@@ -222,6 +233,17 @@ class ScriptedMachine(contextlib.AbstractContextManager):
             answer.running = True
         return answer
 
+    def run_to(self, address, limit):
+        """Run until the instruction at `address` is next (a SIMH breakpoint, removed
+        again), at most `limit` simulated seconds; the Answer (`stopped` names the
+        breakpoint, or says the time ran out). The QUERY breakpoint stays set."""
+        self.simh(f"break {address:o}")
+        try:
+            answer = self._run(f"step {self._steps(limit)}", f"run to {address:o}")
+        finally:
+            self.simh(f"nobreak {address:o}")
+        return self._limited(answer, limit)
+
     def wait(self, seconds):
         """Let `seconds` of simulated time pass with no input; the output."""
         answer = self._run(f"step {self._steps(seconds)}", f"#wait {seconds}")
@@ -241,7 +263,7 @@ class ScriptedMachine(contextlib.AbstractContextManager):
             self.child.expect(pexpect.EOF, timeout=10)
         except (ScriptError, pexpect.TIMEOUT, pexpect.EOF, OSError):
             pass            # a simulator already gone or stuck: killed below
-        self.child.close(force=True)
+        pty_child.close(self.child)
         self._tmp.cleanup()
 
     def __exit__(self, *exc):

@@ -1,8 +1,10 @@
 # mk/harness.mk: the harness's scripted runs and regression suite.
 #   make regression          run tests/regression/scenarios against their goldens
 #   make regression-update   rewrite the goldens and print what changed
-#   make bench-harness       wall time of one scenario with boot, of the whole
-#                            suite, and the real-time factor (part of make bench)
+#   make bench-harness       wall time of one scenario with boot (in process and
+#                            from the command line), of the regression suite and
+#                            of make test, the real-time factor, the idle console's
+#                            share of a core (part of make bench)
 HARNESS_NEEDS := $(BUILD)/pdp11 $(BUILD)/kernel.lda $(BUILD)/kernel.map $(PRISTINE_DSK) venv
 
 regression: $(HARNESS_NEEDS)

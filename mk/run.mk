@@ -2,7 +2,7 @@
 # (python -m harness console): the simulator, the kernel, the Python venv and
 # the working disk local/robot.dsk (made from build/robot.dsk when missing,
 # never overwritten) are built first. Leave with BYE (blocks are flushed).
-#   make run FAST=1      full speed instead of the 11/23's real-time pace
+#   make run FAST=1      full speed while the FORTH works, the 11/23's pace while it waits for a key
 #   make run TRACE=f.csv record the plant trace
 run: $(BUILD)/pdp11 $(BUILD)/kernel.lda $(BUILD)/kernel.map $(WORK_DSK) venv
 	@$(PY) -m harness console $(if $(FAST),--fast) $(if $(TRACE),--trace $(TRACE))

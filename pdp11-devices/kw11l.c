@@ -21,11 +21,31 @@
    nothing here reads the host's clock.
 
    Devices SIMH paces from the clock (console polling, RQ's timer) read
-   tmr_poll/tmxr_poll: they are set to RATE/60 instructions, a constant. */
+   tmr_poll/tmxr_poll: they are set to RATE/60 instructions, a constant.
+
+   Pacing to the wall clock (nothing else here reads the host's clock, and
+   pacing changes only when things happen on the host: every event keeps its
+   instruction count, so runs stay deterministic). At a tick, the clock sleeps
+   the host while simulated time is ahead of the wall clock since a reference
+   point; a reference more than 100 ms behind (the machine was stopped at
+   sim>, or the host was slow) is dropped and taken anew, so no burst follows.
+     SET CLK REALTIME (NOREALTIME to end): every tick, busy or not: the 11/23's
+       real pace from the first instruction. The console's real-time mode uses
+       it: SIMH 3.8.1's SET THROTTLE cannot pace WAIT (measured: a WAIT loop ran
+       16 times too fast) and measures the host anew after every CONT.
+     SET CPU IDLE (SIMH's own switch; the console's --fast sets it): only ticks
+       that find the CPU in WAIT (the kernel's KEY waiting for a key), so an
+       idle prompt passes at the real pace and costs the host little while
+       busy stretches run at full speed. (SIMH's own sim_idle needs a
+       wall-calibrated timer, which this clock never is.)
+   Without either (scripted runs) WAIT costs one count per simulated
+   instruction time, as in stock SIMH. */
 #include "robot.h"
 
 extern int32 int_req[IPL_HLVL];
 extern int32 tmr_poll, tmxr_poll;
+extern int32 wait_state;                /* pdp11_cpu.c: the CPU is in WAIT */
+extern t_bool sim_idle_enab;            /* sim_timer.c: SET CPU IDLE */
 
 #define LKS_MON  0200
 #define LKS_IE   0100
@@ -38,6 +58,11 @@ static double base_time_s, base_instr;  /* time base, rebased when RATE changes 
 static int32 lks;
 static int32 tick_acc;                  /* remainder of the exact tick series */
 static uint32 ticks;                    /* ticks since power-up */
+static int realtime;                    /* SET CLK REALTIME */
+static int pacing;                      /* a reference point is held */
+static uint32 pace_wall_ms;             /* host ms at the reference point */
+static double pace_time_s;              /* simulated s at the reference point */
+#define PACE_SLACK_MS 100.0             /* further behind: take a new reference */
 
 static t_stat kwl_rd (int32 *data, int32 PA, int32 access);
 static t_stat kwl_wr (int32 data, int32 PA, int32 access);
@@ -46,6 +71,7 @@ static t_stat kwl_reset (DEVICE *dptr);
 static t_stat kwl_set_rate (UNIT *uptr, int32 val, char *cptr, void *desc);
 static t_stat kwl_show_rate (FILE *st, UNIT *uptr, int32 val, void *desc);
 static t_stat kwl_show_state (FILE *st, UNIT *uptr, int32 val, void *desc);
+static t_stat kwl_set_realtime (UNIT *uptr, int32 val, char *cptr, void *desc);
 
 double robot_time (void)
 {
@@ -91,6 +117,8 @@ static REG kwl_reg[] = {
 static MTAB kwl_mod[] = {
     { MTAB_XTD|MTAB_VDV, 0, "RATE", "RATE", &kwl_set_rate, &kwl_show_rate, NULL },
     { MTAB_XTD|MTAB_VDV, 0, "STATE", NULL, NULL, &kwl_show_state, NULL },
+    { MTAB_XTD|MTAB_VDV, 1, NULL, "REALTIME", &kwl_set_realtime, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, 0, NULL, "NOREALTIME", &kwl_set_realtime, NULL, NULL },
     { MTAB_XTD|MTAB_VDV, 0, "ADDRESS", NULL, NULL, &show_addr, NULL },
     { MTAB_XTD|MTAB_VDV, 0, "VECTOR", NULL, NULL, &show_vec, NULL },
     { 0 }
@@ -122,8 +150,28 @@ static t_stat kwl_wr (int32 data, int32 PA, int32 access)
     return SCPE_OK;
 }
 
+/* At a tick: sleep while simulated time is ahead of the host's (see above). */
+static void pace (void)
+{
+    double ahead_ms;
+    uint32 wall;
+    if (!realtime && !(sim_idle_enab && wait_state)) {
+        pacing = 0;
+        return;
+    }
+    wall = sim_os_msec ();
+    ahead_ms = (robot_time () - pace_time_s) * 1000.0 - (double) (uint32) (wall - pace_wall_ms);
+    if (!pacing || ahead_ms < -PACE_SLACK_MS) {
+        pacing = 1;
+        pace_wall_ms = wall;
+        pace_time_s = robot_time ();
+    } else if (ahead_ms >= 1.0)
+        sim_os_ms_sleep ((unsigned int) (ahead_ms > 1000.0 ? 1000.0 : ahead_ms));
+}
+
 static t_stat kwl_svc (UNIT *uptr)
 {
+    pace ();
     ticks++;
     lks |= LKS_MON;
     if (lks & LKS_IE)
@@ -168,9 +216,18 @@ static t_stat kwl_set_rate (UNIT *uptr, int32 val, char *cptr, void *desc)
     return SCPE_OK;
 }
 
+static t_stat kwl_set_realtime (UNIT *uptr, int32 val, char *cptr, void *desc)
+{
+    if (cptr != NULL)
+        return SCPE_ARG;
+    realtime = val;
+    pacing = 0;
+    return SCPE_OK;
+}
+
 static t_stat kwl_show_rate (FILE *st, UNIT *uptr, int32 val, void *desc)
 {
-    fprintf (st, "rate=%d instructions/s", robot_rate);
+    fprintf (st, "rate=%d instructions/s%s", robot_rate, realtime ? ", realtime" : "");
     return SCPE_OK;
 }
 

@@ -3,6 +3,7 @@
 
 #include <math.h>
 #include <stddef.h>
+#include <string.h>
 
 const char *const plant_param_names[P_COUNT] = {
     "KV", "TAU", "AMAX", "VMAX", "OFFSET", "PMIN", "PMAX", "WALK", "POS"
@@ -51,6 +52,7 @@ void plant_reseed (plant *pl, uint64_t seed)
 
 void plant_init (plant *pl, uint64_t seed)
 {
+    memset (pl, 0, sizeof *pl);                 /* padding too: states compare with memcmp */
     for (int i = 0; i < PLANT_AXES; i++) {
         plant_axis *a = &pl->ax[i];
         a->kv = DEFAULT_KV;
@@ -68,6 +70,7 @@ void plant_init (plant *pl, uint64_t seed)
     }
     pl->now = 0.0;
     pl->grid = 0;
+    pl->power = 1;
     plant_reseed (pl, seed);
 }
 
@@ -80,6 +83,8 @@ double plant_vcmd (const plant *pl, int axis)
 {
     const plant_axis *a = &pl->ax[axis];
     double vc = a->kv * ((double) (a->code - PLANT_CODE_ZERO) - plant_offset (pl, axis));
+    if (!pl->power)
+        return 0.0;                              /* no drive, z's brake on */
     return vc > a->vmax ? a->vmax : (vc < -a->vmax ? -a->vmax : vc);
 }
 
@@ -201,6 +206,11 @@ void plant_set_run (plant *pl, int axis, int run)
     if (run && !a->run)
         a->p0 = a->p;
     a->run = run ? 1 : 0;
+}
+
+void plant_set_power (plant *pl, int on)
+{
+    pl->power = on ? 1 : 0;
 }
 
 uint16_t plant_counter (const plant *pl, int axis)

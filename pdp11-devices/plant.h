@@ -13,6 +13,10 @@
      stepped every 0.1 s on the fixed grid of simulated time
      counter = floor(p - p0) mod 65536 while the run line is 1 (p0 = p when
      the run line went to 1), 0 while it is 0
+   The amplifier rack's power switch (power, on at plant_init): while it is
+   off no amplifier drives its motor and z's brake holds, so vc = 0 on every
+   axis whatever the DAC says (the offsets, gravity included, move nothing):
+   a moving axis slows to rest along the same lag and stays there.
 
    Between events the lag is solved exactly (constant-acceleration segment
    while the current limit binds, then the exponential); a stop is met at the
@@ -61,6 +65,7 @@ typedef struct {
     double now;                /* simulated seconds the state refers to */
     uint64_t grid;             /* index of the last grid point passed */
     uint64_t seed;
+    int power;                 /* amplifier rack switched on */
 } plant;
 
 extern const char *const plant_param_names[P_COUNT];
@@ -71,6 +76,7 @@ void plant_reseed (plant *pl, uint64_t seed);   /* restart the random streams */
 void plant_advance (plant *pl, double t);       /* integrate up to time t */
 void plant_set_code (plant *pl, int axis, int code);
 void plant_set_run (plant *pl, int axis, int run);
+void plant_set_power (plant *pl, int on);       /* the amplifier rack's switch */
 uint16_t plant_counter (const plant *pl, int axis);
 double plant_vcmd (const plant *pl, int axis);
 double plant_offset (const plant *pl, int axis);

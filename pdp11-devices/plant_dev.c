@@ -12,7 +12,9 @@
      POS (counts: puts the axis there at rest; a running counter counts it)
      device-wide: SET PLANT SEED=n (random walk seed, default 1983),
      SET PLANT SAMPLE=n (trace samples per simulated second, 0..1000,
-     default 60; 0 = rows at DAC writes only)
+     default 60; 0 = rows at DAC writes only), SET PLANT POWER=ON|OFF (the
+     amplifier rack's power switch, plant.h; on at power-up of the simulator;
+     the interactive console switches it off at boot);
      the gripper (the project's continuation, docs/continuation.md):
      SET PLANT GRIPPER OBJECT=1.0   (an object that wide between the fingers,
      inches; 0 = none; refused while the fingers are closer than that),
@@ -60,6 +62,7 @@ static t_stat plant_set (UNIT *uptr, int32 which, char *cptr, void *desc);
 static t_stat plant_set_gripper (UNIT *uptr, int32 which, char *cptr, void *desc);
 static t_stat plant_set_seed (UNIT *uptr, int32 val, char *cptr, void *desc);
 static t_stat plant_set_sample (UNIT *uptr, int32 val, char *cptr, void *desc);
+static t_stat plant_set_power_switch (UNIT *uptr, int32 val, char *cptr, void *desc);
 static t_stat plant_show_global (FILE *st, UNIT *uptr, int32 val, void *desc);
 static t_stat plant_show_axes (FILE *st, UNIT *uptr, int32 val, void *desc);
 
@@ -88,6 +91,7 @@ static MTAB plant_mod[] = {
     { MTAB_XTD|MTAB_VDV, G_PARTZ, NULL, "PARTZ", &plant_set_gripper, NULL, NULL },
     { MTAB_XTD|MTAB_VDV, 0, NULL, "SEED", &plant_set_seed, NULL, NULL },
     { MTAB_XTD|MTAB_VDV, 0, NULL, "SAMPLE", &plant_set_sample, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, 0, NULL, "POWER", &plant_set_power_switch, NULL, NULL },
     { MTAB_XTD|MTAB_VDV, 0, "SETTINGS", NULL, NULL, &plant_show_global, NULL },
     { MTAB_XTD|MTAB_VUN, 0, "AXES", NULL, NULL, &plant_show_axes, NULL },
     { 0 }
@@ -327,10 +331,26 @@ static t_stat plant_set_sample (UNIT *uptr, int32 val, char *cptr, void *desc)
     return SCPE_OK;
 }
 
+static t_stat plant_set_power_switch (UNIT *uptr, int32 val, char *cptr, void *desc)
+{
+    int on;
+    if (cptr != NULL && strcmp (cptr, "ON") == 0)
+        on = 1;
+    else if (cptr != NULL && strcmp (cptr, "OFF") == 0)
+        on = 0;
+    else {
+        printf ("PLANT: POWER is ON or OFF (the amplifier rack's switch)\n");
+        return SCPE_ARG;
+    }
+    plant_dev_catch_up ();                       /* what happened so far, with the old state */
+    plant_set_power (&robot_plant, on);
+    return SCPE_OK;
+}
+
 static t_stat plant_show_global (FILE *st, UNIT *uptr, int32 val, void *desc)
 {
-    fprintf (st, "seed=%llu, sample=%d/s, time=%.6fs", (unsigned long long) robot_plant.seed,
-             sample_hz, robot_time ());
+    fprintf (st, "seed=%llu, sample=%d/s, power=%s, time=%.6fs", (unsigned long long) robot_plant.seed,
+             sample_hz, robot_plant.power ? "on" : "off", robot_time ());
     return SCPE_OK;
 }
 

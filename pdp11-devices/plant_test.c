@@ -189,6 +189,27 @@ static void test_extremes_stay_finite (void)
     check (ok, "random codes: finite, inside the stops", ok, 1);
 }
 
+static void test_power_switch (void)
+{
+    plant pl;
+    plant_init (&pl, 5);
+    plant_set_code (&pl, AXIS_X, 2048 + 300);
+    plant_advance (&pl, 0.5);                      /* x at full speed, z falling */
+    plant_set_power (&pl, 0);
+    plant_advance (&pl, 1.0);                      /* 25 time constants: at rest */
+    double px = pl.ax[AXIS_X].p, pz = pl.ax[AXIS_Z].p;
+    check (plant_vcmd (&pl, AXIS_X) == 0.0 && plant_vcmd (&pl, AXIS_Z) == 0.0,
+           "rack off: no axis is commanded", plant_vcmd (&pl, AXIS_Z), 0);
+    plant_advance (&pl, 600.0);                    /* ten minutes: z's gravity moves nothing */
+    check (fabs (pl.ax[AXIS_X].p - px) < 1e-6 && fabs (pl.ax[AXIS_Z].p - pz) < 1e-6 &&
+           fabs (pl.ax[AXIS_Z].v) < 1e-9,
+           "rack off: the axes stand still", pl.ax[AXIS_Z].p - pz, 0);
+    plant_set_power (&pl, 1);
+    plant_advance (&pl, 601.0);
+    check (pl.ax[AXIS_X].p > px + 5000.0, "rack on again: x moves at its DAC's command",
+           pl.ax[AXIS_X].p - px, 5860);
+}
+
 static void test_bad_parameters (void)
 {
     plant pl;
@@ -211,6 +232,7 @@ int main (void)
     test_drift ();
     test_determinism_and_walk ();
     test_extremes_stay_finite ();
+    test_power_switch ();
     test_bad_parameters ();
     printf ("%d checks, %d failed\n", checks, failures);
     return failures != 0;

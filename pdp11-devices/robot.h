@@ -31,6 +31,9 @@ void plant_dev_command_done (void);               /* after each SCP command */
 t_stat robot_attach_text (UNIT *uptr, char *cptr, const char *what);
 void robot_detach_text (UNIT *uptr);
 
+/* EXAMINE/DEPOSIT at 160000-177777 reach the I/O page (io_page_examine.c). */
+void io_page_examine_install (void);
+
 /* Console input pacing (console_pacing.c). */
 void console_pacing_install (void);
 void console_pacing_rate_changed (void);

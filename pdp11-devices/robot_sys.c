@@ -16,13 +16,15 @@
    only the stock clk_dev's own routines act on; with clk_dev out of the
    table its register, interrupt and service are never installed, so they
    change nothing. tmr_poll and tmxr_poll (console, DZ, RQ timing) are set by
-   kw11l.c to the constant RATE/60. sim_idle(TMR_CLK) (SET CPU IDLE) never
-   idles: the calibrated timer it needs is never started.
+   kw11l.c to the constant RATE/60. sim_idle(TMR_CLK) never idles: the
+   calibrated timer it needs is never started; with SET CPU IDLE the KW11-L
+   idles the host itself while the CPU WAITs (kw11l.c).
 
    Hooks. scp.c declares `void (*sim_vm_init)(void)` without initialising it
    and calls it first thing in main(); with -fcommon this file's initialised
    definition is the one linked. robot_vm_init fills the table, replaces the
-   console keyboard's service routine (console_pacing.c), wraps the RL02
+   console keyboard's service routine (console_pacing.c), wraps the CPU's
+   examine and deposit for the I/O page (io_page_examine.c), wraps the RL02
    units' service routine so that a written block is fflush()ed and fsync()ed
    before the controller reports it done (rl_durable.c: FLUSH is durable), and
    installs sim_vm_post, which scp.c calls after every command (used to end a
@@ -63,6 +65,7 @@ static void robot_vm_init (void)
     sim_devices[n] = NULL;
     plant_dev_init ();
     console_pacing_install ();
+    io_page_examine_install ();
     rl_durable_install ();
     sim_vm_post = &robot_vm_post;
 }

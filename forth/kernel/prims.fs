@@ -194,6 +194,15 @@ CODE (FIND)  ( a u lfa -- nfa | 0 )
 \ console (DL11 at 177560): receive by interrupt into a ring of 511 characters;
 \ when the ring is full further characters are dropped and counted (RXLOST)
 \ ^C is not queued: it interrupts whatever runs (a runaway loop) with error -28
+
+\ KEY's idle step (JSR PC): with the ring empty, WAIT for the next interrupt, so
+\ the host can idle (SET CPU IDLE, pdp11-devices/kw11l.c); time still passes
+\ by the instruction count. Its layout is fixed: CMP at +0, BNE at +6, WAIT at
+\ +8, RTS at +10. A receive interrupt taken at +6 or +8 has already put its
+\ character in the ring, so RXINT returns to +10 instead of letting WAIT sleep
+\ on it (the ring is tested again by KEY).
+LABEL KEY-IDLE
+  RXTAIL @# RXHEAD @# CMP,  EQ IF,  WAIT,  THEN,  PC RTS,  END-CODE
 LABEL RXINT
   RP -) R0 MOV,  RP -) T MOV,  RP -) W MOV,
   R0 177562O @# MOV,  R0 177600O # BIC,
@@ -201,11 +210,21 @@ LABEL RXINT
   W RXHEAD @# MOV,  T W MOV,  T INC,  T RING-MASK INVERT # BIC,
   T RXTAIL @# CMP,
   EQ IF,  RXLOST @# INC,  ELSE,  RING W I) R0 MOVB,  RXHEAD @# T MOV,  THEN,
+  R0 6 RP I) MOV,  R0 KEY-IDLE 6 + # SUB,  2 # R0 CMP,
+  LOS IF,  6 RP I) KEY-IDLE 10 + # MOV,  THEN,
   W RP )+ MOV,  T RP )+ MOV,  R0 RP )+ MOV,  RTI,  END-CODE
 CODE KEY?  ( -- f )  \ FACILITY
   T CLR,  RXTAIL @# RXHEAD @# CMP,  NE IF,  T DEC,  THEN,  S -) T MOV,  NEXT,  END-CODE
+\ While the priority is 4 or more (Disable.Interrupts at the terminal) the DL11
+\ cannot interrupt: KEY then polls the receiver and hands a character to RXINT
+\ as the interrupt would (PS and PC pushed), so the console never goes deaf.
 CODE KEY  ( -- c )  \ CORE
-  BEGIN,  RXTAIL @# RXHEAD @# CMP,  NE UNTIL,
+  BEGIN,  RXTAIL @# RXHEAD @# CMP,  EQ WHILE,
+    R0 MFPS,  R0 177400O # BIC,  R0 200O # BIT,      \ MFPS extends the sign: PS is 8 bits
+    EQ IF,  KEY-IDLE @# PC JSR,
+    ELSE,  177560O @# 200O # BIT,  NE IF,  RP -) R0 MOV,  RXINT @# PC JSR,  THEN,
+    THEN,
+  REPEAT,
   W RXTAIL @# MOV,  S -) CLR,  S ) RING W I) MOVB,
   W INC,  W RING-MASK INVERT # BIC,  RXTAIL @# W MOV,  NEXT,  END-CODE
 CODE PRIORITY!  ( n -- )  \ processor priority 0-7

@@ -96,9 +96,24 @@ VARIABLE DISARMED  ( -- a ) \ vector DISARM put back, -1 = none
   DUP -50 = IF DROP ." search-order underflow" EXIT THEN
   DUP -256 = IF DROP .TRAP EXIT THEN
   ." error " . ;
-: .ERROR  ( code -- )  \ Error: what: word [in block b line l]
-  CR ." Error: " .ERROR-TEXT  ." : " WHAT 2@ TYPE
-  ERR-BLK @ IF ."  in block " ERR-BLK @ . ." line " ERR-IN @ 1- 0 MAX 64 / . THEN CR ;
+\ An undefined word that a vocabulary outside the search order holds (after an
+\ error the context is CURRENT again, so the editor's P is gone until EDITOR is
+\ typed): say which vocabulary to type.
+: IN-ORDER?  ( wid -- f )  \ is wid in the search order?
+  FALSE #ORDER @ 2* CONTEXT + CONTEXT ?DO OVER I @ = OR 2 +LOOP NIP ;
+: .ELSEWHERE  ( -- )
+  VOC-LINK @ BEGIN ?DUP WHILE
+    DUP 8 -  DUP VOC-NAME OVER IN-ORDER? 0= AND IF
+      WHAT 2@ 2 PICK WID-FIND IF
+        ."  (a word of " DUP VOC-NAME .NAME ." : type " VOC-NAME .NAME
+        ."  to select it again)" DROP EXIT
+      THEN
+    THEN DROP @
+  REPEAT ;
+: .ERROR  ( code -- )  \ Error: what: word [in block b line l] [(where it is)]
+  CR ." Error: " DUP .ERROR-TEXT  ." : " WHAT 2@ TYPE
+  ERR-BLK @ IF ."  in block " ERR-BLK @ . ." line " ERR-IN @ 1- 0 MAX 64 / . THEN
+  -13 = IF .ELSEWHERE THEN CR ;
 : UNLINK  ( lfa -- )  \ the newest header of CURRENT leaves, HERE goes back to it
   DUP @ OVER 2+ C@ CURRENT @ SWAP CHAIN !  DP !  CURRENT @ NEWEST 2+ LAST ! ;
 : DISCARD-DEFINITION  ( -- )  \ a definition cut short leaves nothing behind

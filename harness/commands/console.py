@@ -4,12 +4,10 @@ import shutil
 from pathlib import Path
 
 from harness.commands.argtypes import positive
-from harness.console_session import BUSY_WAIT, HINT, session
+from harness.console_session import BUSY_WAIT, HINT, RACK_HINT, session
 from harness.disk import DiskError, check_image
 from harness.simh import PDP11
 
-NAME = "console"
-HELP = "the interactive FORTH console on the robot's PDP-11/23 (what make run starts)"
 ROOT = Path(__file__).resolve().parents[2]
 WORK_DISK = ROOT / "local" / "robot.dsk"
 PRISTINE = ROOT / "build" / "robot.dsk"
@@ -23,11 +21,13 @@ ERRORS = (ConsoleError, DiskError)
 
 DESCRIPTION = f"""\
 Boot the FORTH on the robot's PDP-11/23 and join your terminal to its console,
-ready for `1000 LOAD`. The machine runs at the 11/23's pace (SIMH SET THROTTLE
-300K: SIMH measures the host for a few million instructions first, then
-paces) unless --fast.
+ready for `1000 LOAD`. The machine runs at the 11/23's pace (SET CLK
+REALTIME) unless --fast: then at full speed while the FORTH works, and at the
+11/23's pace while it waits for a key (SET CPU IDLE), which costs the host little.
 
 {HINT}
+
+{RACK_HINT}
 
 The disk is the working copy local/robot.dsk (created from build/robot.dsk when
 missing; make never overwrites it), or --disk IMAGE."""

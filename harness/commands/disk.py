@@ -4,8 +4,6 @@ import sys
 from harness.disk import (BLOCKS, DiskError, block_ranges, carry_out_export, pack,
                           plan_export, read_block_dir, read_image, write_atomic)
 
-NAME = "disk"
-HELP = "RL02 block disk images: pack block text files, export blocks to text"
 ERRORS = (DiskError,)
 
 

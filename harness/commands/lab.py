@@ -5,15 +5,15 @@ import asyncio
 from pathlib import Path
 
 from harness.commands.console import ConsoleError, working_disk
+from harness.disk import DiskError
 from harness.lab.server import NODE_MODULES, serve
 from harness.scripted_machine import KERNEL_MAP, read_kernel_map
 from harness.simh import PDP11
 
-NAME = "lab"
-HELP = "the lab bench: the FORTH console, the robot, a scope and the servo in a browser page"
-ERRORS = (ConsoleError,)
+ERRORS = (ConsoleError, DiskError)
 
-DESCRIPTION = HELP + """.
+DESCRIPTION = """\
+The lab bench: the FORTH console, the robot, a scope and the servo in a browser page.
 
 Boots the FORTH on the working disk (local/robot.dsk, as make run) and serves
 the page on 127.0.0.1 only; open the URL it prints (it holds this session's

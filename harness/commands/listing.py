@@ -1,17 +1,17 @@
-"""`listing`: blocks 1000-1012 line by line beside what each line put into memory."""
+"""`listing`: blocks line by line beside what each line put into memory."""
+import argparse
 import os
 import sys
 import tempfile
 from pathlib import Path
 
 from harness import simh
-from harness.listing import ListingError, make_listing
+from harness.listing import PRISTINE, ListingError, format_ranges, listable_blocks, make_listing
 
-NAME = "listing"
-HELP = "list blocks 1000-1012 beside the addresses and words each line compiled or assembled"
 ERRORS = (ListingError, simh.SimhError)
 
-DESCRIPTION = HELP + """.
+DESCRIPTION = """\
+List blocks beside the addresses and words each line compiled or assembled.
 
 Boots the FORTH on a copy of build/robot.dsk, runs `1000 LOAD` with a SIMH
 breakpoint on PARSE-NAME that records where each name was read and what the
@@ -22,34 +22,49 @@ the words it calls, and, for CODE words, SIMH's own disassembly.
 Examples:
   python -m harness listing                      all of 1000-1012
   python -m harness listing --blocks 1008        the interrupt servo's block
-  python -m harness listing --blocks 1002-1003 --out stop.lst"""
+  python -m harness listing --blocks 1002-1003 --out stop.lst
+  python -m harness listing --blocks 1030-1031   the proposed ramp (after 1000 LOAD)
+
+Machine code names its operands: MOV Desire.Pos(R1),R2, MOV R0,@#CntOut (the
+constant the source used; the I/O register follows as a comment). A bad --blocks
+is a usage error (exit status 2)."""
 
 
 def block_range(text):
+    """--blocks N or N-M (argparse type): N and M are blocks the disk image holds
+    (blank blocks between them are skipped)."""
     try:
         first, _, last = text.partition("-")
         first, last = int(first), int(last or first)
     except ValueError:
-        raise ListingError(f"--blocks {text!r}: expected N or N-M") from None
-    if not 1000 <= first <= last <= 1012:
-        raise ListingError(f"--blocks {text}: the listing covers blocks 1000-1012 "
-                           "(the paper's appendix), in increasing order")
+        raise argparse.ArgumentTypeError(f"{text!r}: expected N or N-M") from None
+    try:
+        present = listable_blocks(PRISTINE.read_bytes())
+    except OSError as err:
+        raise argparse.ArgumentTypeError(f"cannot read {PRISTINE}: {err.strerror} "
+                                         "(run make)") from None
+    if first > last or first not in present or last not in present:
+        raise argparse.ArgumentTypeError(
+            f"{text}: list blocks that {PRISTINE.name} holds, in increasing order: "
+            f"{format_ranges(present)}")
     return first, last
 
 
 def configure(parser):
-    import argparse
     parser.description = DESCRIPTION
     parser.formatter_class = argparse.RawDescriptionHelpFormatter
-    parser.add_argument("--blocks", default="1000-1012", metavar="N[-M]",
-                        help="which blocks to list (default 1000-1012)")
+    parser.add_argument("--blocks", default=(1000, 1012), type=block_range, metavar="N[-M]",
+                        help="which blocks to list (default 1000-1012; also 1020, 1030-1031)")
+    parser.add_argument("--load", type=int, action="append", default=[], metavar="N",
+                        help="a block to LOAD after 1000 and before the listed ones "
+                        "(repeatable), e.g. --load 1040 for 1060's demonstrations")
     parser.add_argument("--out", metavar="FILE", help="write the listing here (default: stdout)")
     parser.set_defaults(run=run)
 
 
 def run(args):
-    first, last = block_range(args.blocks)
-    text = make_listing(first, last).format() + "\n"
+    first, last = args.blocks
+    text = make_listing(first, last, first_load=args.load).format() + "\n"
     if not args.out:
         sys.stdout.write(text)
         return 0

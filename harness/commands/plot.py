@@ -7,8 +7,6 @@ from harness.commands.argtypes import positive
 from harness.plot_errors import PlotError
 from harness.trace import AXES, TraceError, read
 
-NAME = "plot"
-HELP = "draw PNG/SVG figures from a plant trace (CSV from ATTACH PLANT)"
 ERRORS = (TraceError, PlotError)
 FIGURES = ("moves", "time", "zero")              # what "all" draws
 ON_REQUEST = ("xy", "gripper")                   # the continuation's, when named

@@ -1,15 +1,28 @@
 """`regress`: the regression scenarios (tests/regression), compared or updated."""
+import argparse
+
 from harness import regression
 from harness.commands.run import PRISTINE, check_start_image
 from harness.disk import DiskError
 from harness.trace_features import FeatureError
 
-NAME = "regress"
-HELP = "run the regression scenarios against their goldens, or --update them"
 ERRORS = (ValueError, FeatureError, DiskError)
+
+DESCRIPTION = """\
+Run the regression scenarios of tests/regression/scenarios (each NAME.script
+through `run`, boot included) and compare each transcript with NAME.expected
+and its plant trace with NAME.features; or, with --update, rewrite those
+goldens from this run and print what changed (review it before committing).
+docs/console.md describes the files.
+
+Exit status: 0 when every scenario run agrees with its goldens (or --update
+finished); 1 when a scenario differs, a named scenario does not exist, a
+features file is bad or build/robot.dsk is unusable; 2 for a bad option."""
 
 
 def configure(parser):
+    parser.description = DESCRIPTION
+    parser.formatter_class = argparse.RawDescriptionHelpFormatter
     parser.add_argument("names", nargs="*", metavar="SCENARIO",
                         help="scenario names (default: all in tests/regression/scenarios)")
     parser.add_argument("--update", action="store_true",

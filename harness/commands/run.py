@@ -12,8 +12,6 @@ from harness.script_run import run_steps
 from harness.scripted_machine import KERNEL, ScriptError, ScriptedMachine
 from harness.simh import PDP11, SimhError
 
-NAME = "run"
-HELP = "run a console script on a fresh copy of the disk: transcript and plant trace"
 ERRORS = (script.ScriptSyntaxError, ScriptError, SimhError, DiskError)
 PRISTINE = Path(__file__).resolve().parents[2] / "build" / "robot.dsk"
 
@@ -32,7 +30,8 @@ transcript). The run is deterministic: the same script gives the same bytes.
 
 Exit status 0 if every line was answered " ok"; 1 if a line failed (named as
 SCRIPT:LINE: the error), the script is bad, or the machine could not be run;
-2 for a bad option. Outputs are written whole (temporary file, then renamed);
+2 for a bad option. Outputs are written whole (temporary file, then renamed)
+into directories that must exist (--out is not created, as plot's is not);
 a run that fails still writes them, one that cannot start writes nothing."""
 
 
@@ -73,7 +72,10 @@ def output_paths(args):
 def _check_writable(path):
     parent = path.parent
     if not parent.is_dir():
-        raise ScriptError(f"{parent}: no such directory for {path.name}")
+        raise ScriptError(f"{parent}: no such directory for {path.name} (output "
+                          "directories must exist, as for plot)")
+    if path.is_dir():
+        raise ScriptError(f"{path}: is a directory, not a file to write")
 
 
 def check_start_image(disk):
@@ -87,8 +89,9 @@ def check_start_image(disk):
 def run(args):
     steps = script.read(args.script)
     transcript_path, trace_path = output_paths(args)
-    if args.out:
-        Path(args.out).mkdir(parents=True, exist_ok=True)
+    if args.out and Path(args.out).exists() and not Path(args.out).is_dir():
+        raise ScriptError(f"--out {args.out}: not a directory (--out names the directory "
+                          "for both outputs; --transcript and --trace name files)")
     for path in (transcript_path, trace_path):
         _check_writable(path)
     disk = Path(args.disk)

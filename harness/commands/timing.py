@@ -2,12 +2,10 @@
 import argparse
 from pathlib import Path
 
-from harness import simh
+from harness import servo_timing, simh
 from harness.commands.argtypes import count
 from harness.timing import CHUNK, TimingError, measure
 
-NAME = "timing"
-HELP = "price the executions of a piece of PDP-11 code on a KDF11-A (11/23)"
 ERRORS = (TimingError, simh.SimhError)
 
 DESCRIPTION = """\
@@ -24,7 +22,12 @@ in shared/kdf11-timing.md; an interrupt entry is charged 9.375 us, an estimate
 (IOT's trap sequence), as the tables give none.
 
 Example: the code that vector 100 (the 60 Hz clock) runs, over 2 simulated s:
-  python -m harness timing setup.ini --vector 100 --instructions 600000"""
+  python -m harness timing setup.ini --vector 100 --instructions 600000
+
+The 1983 servo, as make bench-robot prices it, in one command (no SETUP):
+  python -m harness timing --servo idle    1000 LOAD Set.Up.Robot, a move, then
+                                           5 s at rest (the axes hunting)
+  python -m harness timing --servo move    the first 0.6 s of a long move"""
 
 
 def octal(text):
@@ -44,8 +47,12 @@ def end_condition(text):
 def configure(parser):
     parser.description = DESCRIPTION
     parser.formatter_class = argparse.RawDescriptionHelpFormatter
-    parser.add_argument("setup", metavar="SETUP", help="SIMH script that prepares the run")
-    where = parser.add_mutually_exclusive_group(required=True)
+    parser.add_argument("setup", metavar="SETUP", nargs="?",
+                        help="SIMH script that prepares the run")
+    where = parser.add_mutually_exclusive_group()
+    where.add_argument("--servo", choices=sorted(servo_timing.CASES),
+                       help="the 1983 servo (Interrupt.Servo) as make bench-robot measures "
+                       "it: idle or during a move; no SETUP")
     where.add_argument("--entry", type=octal, metavar="ADDR",
                        help="octal address of the code's first instruction")
     where.add_argument("--vector", type=octal, metavar="VEC",
@@ -61,7 +68,7 @@ def configure(parser):
     parser.add_argument("--name", help="what to call the code in the report")
     parser.add_argument("--chunk", type=count, default=CHUNK, metavar="N",
                         help=f"history chunk, 64..262144 (default {CHUNK})")
-    parser.set_defaults(run=run)
+    parser.set_defaults(run=run, parser=parser)
 
 
 def _read(path, what):
@@ -74,6 +81,15 @@ def _read(path, what):
 
 
 def run(args):
+    if args.servo:
+        if args.setup or args.keyboard:
+            args.parser.error("--servo prepares its own run: no SETUP or --keyboard")
+        label, report = servo_timing.measure(args.servo)
+        print(report.format("Interrupt.Servo"))
+        print(servo_timing.summary(label, report))
+        return 0
+    if not args.setup or (args.entry is None and args.vector is None):
+        args.parser.error("give SETUP and one of --entry, --vector (or --servo)")
     setup = _read(args.setup, "setup")
     keyboard = _read(args.keyboard, "keyboard") if args.keyboard else ""
     report = measure(setup, entry=args.entry, vector=args.vector, end=args.end,

@@ -64,3 +64,18 @@ def test_changing_rate_mid_run_keeps_time_and_ticks_continuous():
                    "step 150000\nexamine clk ticks\nshow clk state\n")
     assert simh.examined(out, radix=10)["TICKS"] == 119     # the 120th lands at 2.000 s
     assert "time=2.000000s" in out
+
+
+@pytest.mark.parametrize("pacing", ["set clk realtime", "set cpu idle"])
+def test_wall_clock_pacing_changes_no_count(pacing):
+    """SET CLK REALTIME and SET CPU IDLE pace the host (pdp11-devices/kw11l.c); what
+    happens at which instruction count stays the same (0.2 simulated s here)."""
+    assert count_ticks(RATE // 5, extra=pacing + "\n") == count_ticks(RATE // 5)
+
+
+def test_realtime_is_shown_and_can_be_ended():
+    out = simh.run("set clk realtime\nshow clk\nset clk norealtime\nshow clk\n"
+                   "set clk realtime=2\nshow clk\n")
+    shows = [line for line in out.splitlines() if line.startswith("CLK, rate=")]
+    assert [", realtime" in line for line in shows] == [True, False, False]
+    assert "Non-existent parameter" in out or "Invalid argument" in out

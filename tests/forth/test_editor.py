@@ -118,3 +118,13 @@ def test_change_text_inside_a_line(image):
             assert not r.ok and message in r.error, bad
         assert listed_lines(m.send("EDITOR 0 T")) == {0: ": DUP * ; ( n -- n*n )"}
         assert listed_lines(m.send("L"))[1] == ""
+
+
+def test_after_an_error_the_editor_word_says_how_to_select_it_again(image):
+    with Machine(disk=image) as m:
+        m.send("EDITOR 200 WIPE 0 P first")
+        assert m.reply("NOSUCH").error == "undefined word: NOSUCH"   # context is FORTH now
+        r = m.reply("1 P second")
+        assert r.error == "undefined word: P (a word of EDITOR: type EDITOR to select it again)"
+        m.send("EDITOR 1 P second")
+        assert m.send("1 T").rstrip() == "\r\n 1 second"

@@ -1,5 +1,6 @@
 """The plot and timing subcommands from the command line: files written, and bad
 input: a clear message, a non-zero exit, nothing written."""
+import re
 import subprocess
 import sys
 
@@ -90,7 +91,7 @@ def test_timing_cli(tmp_path):
     (["missing.ini", "--entry", "1400"], 1, "missing.ini: no such setup file"),
     (["SETUP", "--entry", "1401"], 2, "expected an even address"),
     (["SETUP", "--entry", "9"], 2, "expected an octal address"),
-    (["SETUP"], 2, "one of the arguments --entry --vector is required"),
+    (["SETUP"], 2, "give SETUP and one of --entry, --vector (or --servo)"),
     (["SETUP", "--entry", "1000", "--instructions", "0"], 2, "expected a whole number"),
     (["SETUP", "--entry", "2000", "--instructions", "1000"], 1, "never ran through its RTI"),
 ])
@@ -117,3 +118,18 @@ def test_plot_a_trace_of_dac_writes_only(tmp_path, capsys):
     assert capsys.readouterr().out.split() == [str(tmp_path / "writes-time.png")]
     assert main(["plot", str(path), "--axis", "Y"]) == 1
     assert "no rows for axis Y (the trace has X)" in capsys.readouterr().err
+
+
+def test_timing_servo_in_one_command(capsys):
+    """The servo during a move, as make bench-robot prices it: 0.6 s = 36 ticks."""
+    assert main(["timing", "--servo", "move"]) == 0
+    out = capsys.readouterr().out
+    assert "Interrupt.Servo, during a move" in out
+    assert re.search(r": 36 ticks, [\d.]+ instructions and \d+ us per tick", out)
+
+
+def test_timing_servo_takes_no_setup(capsys):
+    with pytest.raises(SystemExit) as stop:
+        main(["timing", "--servo", "idle", "setup.ini"])
+    assert stop.value.code == 2
+    assert "--servo prepares its own run" in capsys.readouterr().err

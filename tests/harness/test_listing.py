@@ -54,13 +54,37 @@ def test_headers_and_names_of_new_words(listing):
     assert "Abs.Move.Single" in listing.names.values()
 
 
-def test_cli_rejects_blocks_outside_the_appendix(tmp_path):
+@pytest.mark.parametrize("blocks", ["1013", "1012-1000", "10x", "1019-1020"])
+def test_cli_bad_blocks_is_a_usage_error(tmp_path, blocks):
     out = tmp_path / "x.lst"
-    r = subprocess.run([sys.executable, "-m", "harness", "listing", "--blocks", "1013",
+    r = subprocess.run([sys.executable, "-m", "harness", "listing", "--blocks", blocks,
                         "--out", str(out)], cwd=ROOT, capture_output=True, text=True)
-    assert r.returncode == 1
-    assert "covers blocks 1000-1012" in r.stderr
+    assert r.returncode == 2
+    assert r.stderr.startswith("usage: python -m harness listing")
+    assert "argument --blocks" in r.stderr
     assert not out.exists()
+
+
+def test_operands_are_named(listing):
+    text = listing.format()
+    assert "MOV Desire.Pos(R1),R2" in text             # an ARRAY's body
+    assert "MOV R0,@#CntOut  ; DRV11 CSR" in text      # the constant the source used
+    assert "CMP R2,@#Range" in text                    # a VAR's body
+    assert "MOV 0-Vel(R1),VelOut(R1)  ; AAV11 DAC x" in text
+
+
+def test_assembler_words_named_and_headers_not(listing):
+    words = [w for s in listing.spans[(1002, 7)] for w in s.words]   # W Desire.Pos T I) MOV,
+    assert [listing.names.get(w) for w in words] == ["W", "Desire.Pos", "T", "I)", "MOV,"]
+    section = listing.format().split("Block 1002\n", 1)[1]
+    header_row = [l for l in section.splitlines() if l.startswith("     ")][1]
+    assert header_row.split()[-1] == "DOCOL"      # the code field's handler, nothing else
+
+
+def test_blocks_beyond_the_appendix_are_loaded_by_chain():
+    text = make_listing(1030, 1031).format()
+    assert text.startswith("Block 1030\n") and "Block 1031\n" in text
+    assert "header of Ramp.Servo" in text and "Block 1012" not in text
 
 
 def test_cli_writes_one_block(tmp_path):
@@ -71,3 +95,15 @@ def test_cli_writes_one_block(tmp_path):
     text = out.read_text()
     assert text.startswith("Block 1009\n") and "header of Read.Counter" in text
     assert "Block 1010" not in text
+
+
+def test_blocks_that_need_others_first_say_so_and_take_load(tmp_path):
+    out = tmp_path / "l.lst"
+    r = subprocess.run([sys.executable, "-m", "harness", "listing", "--blocks", "1060",
+                        "--out", str(out)], cwd=ROOT, capture_output=True, text=True)
+    assert r.returncode == 1 and "undefined word: Via" in r.stderr and "--load N" in r.stderr
+    r = subprocess.run([sys.executable, "-m", "harness", "listing", "--blocks", "1060",
+                        "--load", "1040", "--out", str(out)], cwd=ROOT, capture_output=True,
+                       text=True)
+    assert r.returncode == 0, r.stderr
+    assert out.read_text().startswith("Block 1060\n")

@@ -37,7 +37,10 @@ def test_long_move_d0_to_d3(x, long_short):
     # after D2 it falls with the distance left: below the peak, never back up to it
     after = codes[np.flatnonzero(codes == long_.peak_code)[-1] + 1:]
     assert len(after) and after.max() < long_.peak_code
-    assert x.pos[np.flatnonzero(codes == long_.peak_code)[-1] + long_.first] == long_.d2
+    # D2: the row where the code first leaves the peak, after its last peak row
+    last_peak = np.flatnonzero(codes == long_.peak_code)[-1]
+    first_below = last_peak + 1 + np.flatnonzero(codes[last_peak + 1:] != long_.peak_code)[0]
+    assert x.pos[first_below + long_.first] == long_.d2
 
 
 def test_short_move_never_reaches_maxvel(long_short):
@@ -45,7 +48,7 @@ def test_short_move_never_reaches_maxvel(long_short):
     assert short.direction == -1 and short.settled
     assert 0 < short.peak_code < SETTINGS["maxvel"]
     assert short.peak_code % SETTINGS["inc"] == 0       # the ramp's last step
-    assert short.d0 > short.d1 >= short.d2 > short.d3
+    assert short.d0 > short.d1 > short.d2 > short.d3    # a one-tick peak: D2 a tick on
     assert abs(short.d3 - SHORT_TARGET) <= 2 * SETTINGS["range_"]
     assert short.t0 > long_short[0].t1
 
@@ -111,3 +114,27 @@ def test_no_ramp_puts_d1_on_the_first_tick(tmp_path):
     x = trace.read(path).axis("X")
     assert long_.peak_code == 300
     assert long_.d1 == x.pos[long_.first] and long_.d1 - long_.d0 < 5
+
+
+def test_a_one_tick_peak_puts_d2_a_tick_beyond_d1():
+    s = series(pos=[0, 0, 40, 140, 220, 260, 270, 270],
+               dac=[2048, 2348, 2148, 2128, 2088, 2058, 2048, 2048],
+               vel=[0, 900, 6000, 4800, 2400, 900, 0, 0])
+    (move,) = mv.find_moves(s)
+    assert move.peak_code == 300 and move.d0 == 0 and move.d1 == 0
+    assert move.d2 == 40                     # where the command fell, not on D0
+
+
+def test_drift_with_the_dac_at_zero_is_not_a_move():
+    """z falling onto its stop at power-up: DAC 2048 throughout, no servo."""
+    s = series(pos=[0, -200, -900, -1800, -2700, -3600, -4000, -4000],
+               dac=[2048] * 8, vel=[-880] * 6 + [0, 0], vcmd=[-880] * 8)
+    assert mv.find_moves(s) == []
+
+
+def test_short_means_below_maxvel():
+    def move(travel, peak):
+        return mv.Move("X", 0, 1, 2, 2048, 1, peak, 0, 1, 0, 0, 0, travel, True)
+    long_, big, small = move(4000, 300), move(300, 300), move(100, 120)
+    assert mv.long_and_short([long_, big]) == (long_, None)    # no short move
+    assert mv.long_and_short([long_, big, small]) == (long_, small)

@@ -111,3 +111,25 @@ def test_same_figure_same_svg(tr, tmp_path):
     for name in ("a.svg", "b.svg"):
         plots.save(plots.zero_figure(tr, "Y"), [tmp_path / name])
     assert (tmp_path / "a.svg").read_bytes() == (tmp_path / "b.svg").read_bytes()
+
+
+def test_moves_figure_says_when_there_is_no_short_move(tmp_path):
+    """The 1983 servo starts every move at full speed: both moves reach MaxVel,
+    so one panel, and the title says why; z-style drift at DAC 2048 is no move."""
+    rows = ["time_s,axis,dac,vcmd,vel,pos,counter"]
+    t = 0.0
+    for dac, vel, pos in ([(2048, -880, -880 * k / 60) for k in range(30)]      # drift
+                          + [(2048, 0, -440)] * 5
+                          + [(2348, 5800, -440 + 96 * k) for k in range(40)]    # long
+                          + [(2049, 0, 3400)] * 5
+                          + [(2349, 5800, 3400 + 96 * k) for k in range(4)]     # shorter
+                          + [(2049, 0, 3800)] * 5):
+        rows.append(f"{t:.6f},X,{dac},{vel},{vel},{pos},{int(pos)}")
+        t += 1 / 60
+    path = tmp_path / "full-speed.csv"
+    path.write_text("\n".join(rows) + "\n")
+    fig = plots.moves_figure(trace.read(path), "X")
+    (ax,) = [a for a in fig.axes if a.get_lines()]
+    assert ax.get_title().startswith("long move: -440 to ")
+    assert "no short move: every move here peaks at the long move's 300 codes" \
+        in fig.get_suptitle()

@@ -9,7 +9,8 @@ What the measurement showed, and why (blocks 1003-1007):
 - An axis inside Range (|error| < 5) gets 0-Vel (State Stop, Velocity 0); once
   it drifts out, Velocity is 0 < distance, so 1006 kicks it at MaxVel again.
   The axes therefore never rest: they hunt around the target with a period of
-  four ticks (15 Hz) and about +-20 counts, every axis, moving or not.
+  four or five ticks (15 or 12 Hz, depending on the axis and the phase) and
+  about +-20 counts, every axis, moving or not.
 - Command.Status of an axis is cleared the first tick its counter is seen
   inside Range; if the hunting cycle steps over the window (+-4 counts), it is
   never cleared and Move.Complete? never returns (400 -300 600 0 below).
@@ -28,10 +29,9 @@ MOVES = [(1600, 0, 0), (-1600, 0, 0), (200, 0, 0), (40, 0, 0), (0, 800, 0),
 # The hunting's phase follows the kernel's instruction counts while the blocks
 # load: with the Forth-2012 kernel, (0, 60, 0) stepped over the window and never
 # completed, so the short y move is 80 counts.
-# measured in this sequence: |counter - target| at return up to 48 (x, after the
-# y move to 800: x hunting while y arrived), over 3 s of settling up to 42; a
-# run of the same moves without the helper lines first (another phase of the
-# hunting) gave 26 and 27.
+# measured in this sequence: |counter - target| two seconds after Abs.Move and
+# over 3 s of settling up to about 45 (the hunting's amplitude, which depends on
+# its phase: other runs gave 26 and 27).
 AT_RETURN, SETTLING = 60, 50
 
 
@@ -40,9 +40,14 @@ def errors(plant, target):
 
 
 def test_moves_arrive_then_hunt(robot):
+    """Abs.Move, then two simulated seconds (the longest move, 4000 counts at MaxVel,
+    takes 0.7 s): not Move.Complete?, which never returns when an axis's hunting
+    steps over the window, and which of these moves does that depends on the
+    hunting's phase, i.e. on every instruction the kernel ran before."""
     hunting = 0
     for target in MOVES:
-        robot.send("%d %d %d 0 Abs.Move Move.Complete?" % target, timeout=120)
+        robot.send("%d %d %d 0 Abs.Move" % target)
+        robot.idle(2.0)
         at = errors(robot.plant(), target)
         assert max(map(abs, at)) <= AT_RETURN, (target, at)
         worst = [0, 0, 0]
@@ -52,8 +57,6 @@ def test_moves_arrive_then_hunt(robot):
             worst = [max(w, abs(v)) for w, v in zip(worst, e)]
         assert max(worst) <= SETTLING, (target, worst)
         hunting += max(worst) >= RANGE
-        # every Command.Status of x, y, z is 0 once Move.Complete? returned
-        assert numbers(robot.send("Command.Status A."))[:3] == [0, 0, 0]
     # no move settles inside Range: after each, some axis leaves it (measured: all 13)
     assert hunting == len(MOVES)
 

@@ -148,6 +148,38 @@ def test_missing_disk_is_a_clear_error(tmp_path):
     assert child.exitstatus == 1
 
 
+def simh_command(child, command):
+    """^E, one SIMH command, CONT; what the command printed."""
+    child.send("\x05")
+    child.expect("sim> ")
+    child.send(command + "\r")
+    child.expect("sim> ")
+    printed = child.before
+    child.send("cont\r")
+    assert probe_prompt(child) == 0
+    return printed
+
+
+def test_readme_first_session_with_the_rack_switched_on_by_hand(tmp_path):
+    disk = tmp_path / "work.dsk"
+    shutil.copyfile(PRISTINE, disk)
+    child = console(disk)
+    assert "power=off" in simh_command(child, "show plant")      # the console's boot
+    for line in ("1000 LOAD", "Set.Up.Robot"):
+        child.send(line + "\r")
+        child.expect(r" ok\r\n", timeout=60)
+    simh_command(child, "set plant power=on")
+    child.send("800 800 0 0 Abs.Move Move.Complete?\r")
+    child.expect(r"Move.Complete\?  ok\r\n", timeout=60)
+    child.send("0 Read.Counter . 1 Read.Counter .\r")
+    child.expect(r"Read.Counter \. (-?\d+) (-?\d+)  ok\r\n")
+    assert all(abs(int(c) - 800) < 60 for c in child.match.groups())
+    child.send("1020 LOAD\r")                                  # the demonstration block
+    child.expect(r"1020 LOAD x y z t counters: .*\r\n(.*\r\n){3} ok\r\n", timeout=60)
+    child.send("BYE\r")
+    child.expect(pexpect.EOF)
+
+
 def test_a_simulator_that_dies_is_reported_with_what_it_cost(tmp_path):
     """SIMH's `!` runs a shell command: killing SIMH from it stands for a crash."""
     disk = tmp_path / "work.dsk"
@@ -169,12 +201,7 @@ def test_bye_after_the_disk_was_detached_says_so_and_names_the_lost_block(tmp_pa
     shutil.copyfile(PRISTINE, disk)
     child = console(disk)
     write_block_word(child, "no disk to write to")
-    child.send("\x05")
-    child.expect("sim> ")
-    child.send("detach rl0\r")
-    child.expect("sim> ")
-    child.send("cont\r")
-    assert probe_prompt(child) == 0
+    simh_command(child, "detach rl0")
     child.send("BYE\r")
     child.expect(r"RL0 block 100 write not ready: .*not-ready")
     child.expect(r"FLUSH failed \(Error: block write error: FLUSH\)\.\r+\n")

@@ -31,6 +31,7 @@ def test_two_runs_give_identical_files_and_leave_the_disk_alone(tmp_path):
     before = hashlib.sha256(PRISTINE.read_bytes()).hexdigest()
     outputs = []
     for out in ("a", "b"):
+        (tmp_path / out).mkdir()
         r = harness("run", script, "--out", tmp_path / out)
         assert r.returncode == 0, r.stderr
         outputs.append([(tmp_path / out / name).read_bytes()
@@ -141,6 +142,8 @@ def test_a_simh_command_that_simh_refuses_fails_its_line(tmp_path):
     (["run", "BAD.script"], "BAD.script:2: unknown directive #wiat"),
     (["run", "OK.script", "--disk", "NONE.dsk"], "NONE.dsk: no such disk image"),
     (["run", "OK.script", "--transcript", "NODIR/t"], "NODIR: no such directory"),
+    (["run", "OK.script", "--out", "NODIR"], "NODIR: no such directory for OK.transcript"),
+    (["run", "OK.script", "--out", "BAD.script"], "BAD.script: not a directory"),
     (["run", "OK.script", "--kernel", "NONE.lda"], "NONE.lda does not exist"),
     (["run", "OK.script", "--kernel", "BAD.script"], "BAD.map: No such file"),
 ])
@@ -157,3 +160,16 @@ def test_bad_input_is_a_clear_error_and_writes_nothing(tmp_path, args, message):
 def test_a_bad_option_is_a_usage_error(tmp_path):
     r = harness("run", tmp_path / "x.script", "--line-limit", "-3")
     assert r.returncode == 2 and "expected a positive number" in r.stderr
+
+
+def test_an_unknown_option_prints_the_subcommands_usage(tmp_path):
+    r = harness("run", tmp_path / "x.script", "--bogus")
+    assert r.returncode == 2
+    assert r.stderr.startswith("usage: python -m harness run ")
+    assert "unrecognized arguments: --bogus" in r.stderr
+
+
+def test_regress_help_states_the_exit_codes():
+    r = harness("regress", "--help")
+    assert r.returncode == 0
+    assert "Exit status: 0 when every scenario" in " ".join(r.stdout.split())

@@ -1,0 +1,49 @@
+"""`python -m harness tick`: one 60 Hz tick between two tables, the servo's arrays
+read while simulated time stands still."""
+import re
+
+from harness.cli import main
+
+
+def tables(text):
+    """[(tick, time, {axis: [Desire.Pos, counter, Velocity, 0-Vel, State, Status, DAC]})]"""
+    found = []
+    for block in text.split("tick ")[1:]:
+        head = re.match(r"(\d+), t = ([\d.]+) s", block)
+        rows = {m[0]: [int(v) for v in m[1:]] for m in re.findall(
+            r"^  ([XYZT])" + r"\s+(-?\d+)" * 7 + r"$", block, re.M)}
+        found.append((int(head[1]), float(head[2]), rows))
+    return found
+
+
+def test_three_ticks_of_a_move_on_x(capsys):
+    assert main(["tick", "--ticks", "3"]) == 0
+    shown = tables(capsys.readouterr().out)
+    assert len(shown) == 3
+    ticks = [t for t, _, _ in shown]
+    assert ticks == [ticks[0], ticks[0] + 1, ticks[0] + 2]            # one tick apart
+    times = [s for _, s, _ in shown]
+    assert all(abs(b - a - 1 / 60) < 1e-5 for a, b in zip(times, times[1:]))
+    x = [rows["X"] for _, _, rows in shown]
+    assert all(r[0] == 800 for r in x)                                   # Desire.Pos
+    assert x[0][1] < x[1][1] < x[2][1]                                   # counter climbs
+    assert all(r[5] == 1 and r[6] > r[3] for r in x)   # Command.Status 1, DAC above 0-Vel
+
+
+def test_a_bad_setup_line_is_reported(capsys):
+    assert main(["tick", "--setup", "NOSUCH"]) == 1
+    assert "undefined word: NOSUCH" in capsys.readouterr().err
+
+
+def test_servo_md_cost_table_matches_timing_servo():
+    """docs/servo.md's cost table is what `timing --servo move` measures (instruction
+    counts and KDF11-A prices, no host time): a kernel change that moves it shows here."""
+    from harness import servo_timing
+    from harness.simh import ROOT
+    row = re.search(r"^\| during a move [^|]*\| (\d+) \| ([\d.]+) \| (\d+) \|",
+                    (ROOT / "docs" / "servo.md").read_text(), re.M)
+    _, report = servo_timing.measure("move")
+    assert report.count == int(row[1])
+    per_tick = report.total_instructions / report.count
+    assert abs(per_tick - float(row[2])) <= 0.03 * float(row[2]), per_tick
+    assert abs(report.mean_us - float(row[3])) <= 0.03 * float(row[3]), report.mean_us
