@@ -37,7 +37,7 @@ const fit = new FitAddon.FitAddon();
 term.loadAddon(fit);
 term.open(document.getElementById("terminal"));
 function fitTerminal() {           // the largest font that shows the FORTH's 80 columns
-  for (let size = 19; size >= 10; size--) {
+  for (let size = 19; size >= 12; size--) {
     term.options.fontSize = size;
     const dims = fit.proposeDimensions();
     if (dims && dims.cols >= 80) break;
@@ -74,6 +74,7 @@ function showEnded(safe, why) {
                                  : "Session ended: see the console for what was not saved.");
   box.hidden = false;
   setBadge("ended", "ENDED");
+  document.querySelectorAll("header button").forEach((b) => { b.disabled = true; });
 }
 
 function takeData(m) {
