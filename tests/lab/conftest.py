@@ -1,13 +1,10 @@
 """Lab tests: a lab server per module (python -m harness lab, at full speed, on a copy
 of the pristine disk, on a free port) and one headless Chromium for the session."""
-import time
-
 import pytest
 
-from harness.lab.launch import CHROMEDRIVER, CHROMIUM, ROOT, LabProcess, have_browser, \
+from harness.lab.launch import CHROMEDRIVER, CHROMIUM, LabProcess, have_browser, \
     headless_browser
-
-ARTIFACTS = ROOT / "build" / "test-artifacts"
+from labpage import ARTIFACTS
 
 
 @pytest.fixture(scope="module")
@@ -33,15 +30,3 @@ def browser():
     ARTIFACTS.mkdir(parents=True, exist_ok=True)
     yield driver
     driver.quit()
-
-
-def wait_for(what, condition, timeout=30, poll=0.05):
-    """Poll condition() until it is true; its last value, or an AssertionError."""
-    deadline = time.monotonic() + timeout
-    while True:
-        value = condition()
-        if value:
-            return value
-        if time.monotonic() > deadline:
-            raise AssertionError(f"timed out after {timeout} s waiting for {what}")
-        time.sleep(poll)

@@ -5,7 +5,7 @@ BYE leaves. The screenshot is kept in build/test-artifacts/lab.png."""
 import pytest
 from selenium.webdriver.common.by import By
 
-from conftest import ARTIFACTS, wait_for
+from labpage import ARTIFACTS, click, js, type_line, wait_for
 
 # Until Set.Up.Robot the axes drift on their zero offsets (y at +39 counts/s): at
 # full speed the seconds a loaded host takes to start the browser would put y on
@@ -19,23 +19,6 @@ def page(lab_server, browser):
     wait_for("the page to connect", lambda: browser.execute_script(
         "return window.lab && window.lab.connected && window.lab.perAxis.length > 0"))
     return browser
-
-
-def js(page, expression):
-    return page.execute_script(f"return {expression}")
-
-
-def type_line(page, line, answer=" ok", timeout=60):
-    """Type a line into the page's terminal; wait for its answer on the screen."""
-    before = js(page, "window.lab.screen()").count(answer)
-    page.find_element(By.CSS_SELECTOR, "#terminal textarea").send_keys(line + "\n")
-    wait_for(f"{line!r} to be answered",
-             lambda: js(page, "window.lab.screen()").count(answer) > before, timeout)
-    return js(page, "window.lab.screen()")
-
-
-def click(page, selector):
-    page.find_element(By.CSS_SELECTOR, selector).click()
 
 
 def test_the_terminal_answers(page):

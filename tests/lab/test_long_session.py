@@ -6,8 +6,7 @@ import os
 import pytest
 from selenium.webdriver.common.by import By
 
-from conftest import wait_for
-from test_browser import click, js, type_line
+from labpage import click, js, type_line, wait_for
 
 LAB_SPEED = "x10"                  # the axes drift until Set.Up.Robot: see test_browser.py
 pytestmark = pytest.mark.skipif(not os.environ.get("LAB_LONG"),
