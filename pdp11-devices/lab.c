@@ -327,6 +327,13 @@ static t_stat lab_svc (UNIT *uptr)
     return SCPE_OK;
 }
 
+void lab_rate_changed (int32 old_rate)
+{
+    robot_rescale (&lab_unit, old_rate);        /* the next sample keeps its time */
+    sample_acc = 0;
+    rebase ();
+}
+
 static t_stat lab_attach (UNIT *uptr, char *cptr)
 {
     t_stat r;

@@ -169,6 +169,11 @@ uint16 plant_dev_counter (int axis)
     return plant_counter (&robot_plant, axis);
 }
 
+void plant_dev_rate_changing (int32 old_rate)  /* still in the old time */
+{
+    plant_dev_catch_up ();
+}
+
 void plant_dev_rate_changed (int32 old_rate)
 {
     robot_rescale (&plant_unit, old_rate);

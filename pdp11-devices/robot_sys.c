@@ -63,6 +63,12 @@ static void robot_vm_init (void)
     add_device (&n, &plant_dev);
     add_device (&n, &lab_dev);
     sim_devices[n] = NULL;
+    /* a SET CLK RATE: the plant integrates up to now in the old time; then the
+       clock, the plant, the console and the lab keep their events' times */
+    robot_on_rate_change (NULL, &kwl_rate_changed);
+    robot_on_rate_change (&plant_dev_rate_changing, &plant_dev_rate_changed);
+    robot_on_rate_change (NULL, &console_pacing_rate_changed);
+    robot_on_rate_change (NULL, &lab_rate_changed);
     plant_dev_init ();
     console_pacing_install ();
     io_page_examine_install ();

@@ -99,3 +99,13 @@ def test_pacing_pausing_and_stepping_change_nothing_the_machine_does(tmp_path, c
     states, pauses = rows(lab, "S"), paused_at()
     assert [round((b - a) * 60, 3) for a, b in zip(pauses, pauses[1:])] == [1, 1, 1]
     assert states[-1][1] == "run" and float(states[-1][0]) == pauses[-1]
+
+
+def test_ticks_keep_their_simulated_times_when_rate_changes(tmp_path):
+    """SET CLK RATE (time_base.c): the LAB device's pending tick is rescaled too."""
+    out = tmp_path / "lab"
+    simh.run(f"load {KERNEL}\nattach lab {out}\nset lab speed=10\nstep 21000\n"
+             "set clk rate=600000\nstep 40000\ndetach lab\n")
+    times = [s[0] for s in rows(out, "W")]
+    assert times == ["0.016667", "0.033333", "0.050000", "0.066667",
+                     "0.083333", "0.100000", "0.116667", "0.133333"]
