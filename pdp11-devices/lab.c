@@ -32,7 +32,10 @@
    than that (full speed) a tick's W and P rows are written only when 1/60 s
    of wall time has passed since the last reported tick, so the simulator
    formats and writes about 60 ticks a wall second whatever its speed: the
-   page sees snapshots, and the run loses almost nothing to its observer.
+   page sees snapshots, and the run loses little to its observer. Between two
+   reported ticks the device looks (at commands, at the wall clock) at about
+   two ticks, at most 60 ticks (1 simulated second) apart: a pause then
+   stops time at the tick it looks at next.
 
    Determinism: the wall clock only decides when the host sleeps; what the
    machine does at each instruction count is the same at any speed and with
@@ -54,6 +57,7 @@
 #define SUBSAMPLES   4                  /* plant samples per tick */
 #define REPORT_S     (1.0 / 60)         /* wall seconds between ticks reported, when fast */
 #define REPORT_ALL   10.0               /* up to this speed every tick is reported */
+#define SKIP_MAX     60                 /* ticks passed over at most, when fast */
 #define WATCH_MAX    64
 #define DUMP_ROW     64
 #define MEM_TOP      0160000            /* the I/O page starts here */
@@ -69,6 +73,8 @@ static int32 sample_acc;
 static int sub;                         /* sample within the tick, 0 at the tick */
 static int reporting;                   /* this tick's rows are written */
 static double reported_wall;            /* when the last reported tick was */
+static uint32 reported_tick;
+static int32 skip = 1;                  /* ticks from one look to the next, when fast */
 static uint32 tick_no;
 static int ctl_fd = -1;
 static char cmd_buf[CMD_MAX];
@@ -246,15 +252,24 @@ static void write_plant (void)
     }
 }
 
+/* Fast runs: a tick is reported when 1/60 s of wall time has passed since the
+   last one, and the device looks at about two ticks per reported one (at most
+   SKIP_MAX apart), so it adds one event a simulated second, not 240, to a run
+   that idles in WAIT, where SIMH's time leaps from event to event. */
 static int report_this_tick (void)
 {
     double now;
-    if (speed > 0 && speed <= REPORT_ALL)
+    if (speed > 0 && speed <= REPORT_ALL) {
+        skip = 1;
         return 1;
+    }
     now = wall ();
     if (now - reported_wall < REPORT_S)
         return 0;
+    skip = (int32) (tick_no - reported_tick) / 2;
+    skip = skip < 1 ? 1 : (skip > SKIP_MAX ? SKIP_MAX : skip);
     reported_wall = now;
+    reported_tick = tick_no;
     return 1;
 }
 
@@ -292,13 +307,21 @@ static void wait_while_paused (void)
 }
 
 /* The next event: the next sample, or, when this tick is not reported, the next
-   tick (its samples' intervals added up, so the series stays exact). */
+   tick the device looks at (the samples' intervals added up, so the series
+   stays exact and every look falls on a tick). */
 static void schedule (UNIT *uptr)
 {
     int32 n = robot_share (TICKS_PER_S * SUBSAMPLES, &sample_acc);
-    while (!reporting && sub < SUBSAMPLES - 1) {
-        n += robot_share (TICKS_PER_S * SUBSAMPLES, &sample_acc);
-        sub++;
+    if (!reporting) {
+        while (sub < SUBSAMPLES - 1) {              /* to the next tick */
+            n += robot_share (TICKS_PER_S * SUBSAMPLES, &sample_acc);
+            sub++;
+        }
+        for (int32 k = 1; k < skip; k++) {          /* and over skip - 1 more */
+            for (int i = 0; i < SUBSAMPLES; i++)
+                n += robot_share (TICKS_PER_S * SUBSAMPLES, &sample_acc);
+            tick_no++;
+        }
     }
     sim_activate (uptr, n);
 }
@@ -350,7 +373,8 @@ static t_stat lab_attach (UNIT *uptr, char *cptr)
     sprintf (ctl, "%s.ctl", cptr);
     ctl_fd = open (ctl, O_RDONLY | O_NONBLOCK);
     free (ctl);
-    tick_no = 0;
+    tick_no = reported_tick = 0;
+    skip = 1;
     sample_acc = 0;
     sub = 0;
     reporting = 1;
