@@ -18,7 +18,7 @@ include $(filter-out mk/simh.mk mk/python.mk,$(wildcard mk/*.mk))
 all: $(ALL_PRODUCTS)
 
 test: all venv
-	@$(PY) -m pytest -q -n auto --dist loadscope tests
+	@$(PY) -m pytest -q -rs -n auto --dist loadscope tests
 
 bench: all venv $(BENCHES)
 

@@ -14,6 +14,7 @@ import sys
 
 COMMANDS = {
     "console": "the interactive FORTH console on the robot's PDP-11/23 (what make run starts)",
+    "lab": "the lab bench: the FORTH console, the robot, a scope and the servo in a browser page",
     "run": "run a console script on a fresh copy of the disk: transcript and plant trace",
     "regress": "run the regression scenarios against their goldens, or --update them",
     "disk": "RL02 block disk images: pack block text files, export blocks to text",

@@ -176,10 +176,12 @@ def _detach(child, unit):
     return found.group(1) if found else "ok"
 
 
-def leave(child, disk, trace, kernel=KERNEL, busy_wait=BUSY_WAIT):
-    """Flush the FORTH's blocks, check, detach, quit; the Departure."""
+def leave(child, disk, trace, kernel=KERNEL, busy_wait=BUSY_WAIT, devices=(), echo=None):
+    """Flush the FORTH's blocks, check, detach (the trace, then `devices`, then
+    the disk), quit; the Departure. What the FORTH prints meanwhile goes to
+    `echo` (a binary file; default stdout)."""
     gone = Departure(Path(disk))
-    child.logfile_read = sys.stdout.buffer       # the user sees what happens
+    child.logfile_read = echo or sys.stdout.buffer   # the user sees what happens
     try:
         if _to_forth_prompt(child, gone, busy_wait) == 0:
             gone.flush = _flush(child)
@@ -190,8 +192,8 @@ def leave(child, disk, trace, kernel=KERNEL, busy_wait=BUSY_WAIT):
         child.send(CTRL_E)
         child.expect(b"sim> ", timeout=15)
         gone.unwritten = _unwritten(child, kernel)
-        if trace:
-            _detach(child, "plant")
+        for unit in (("plant",) if trace else ()) + tuple(devices):
+            _detach(child, unit)
         gone.detach = _detach(child, "rl0")
         child.send(b"quit\r")
         child.expect(pexpect.EOF, timeout=15)

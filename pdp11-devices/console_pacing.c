@@ -69,7 +69,7 @@ void console_pacing_install (void)
     tti_unit.action = &console_poll_svc;
 }
 
-void console_pacing_rate_changed (void)
+void console_pacing_rate_changed (int32 old_rate)
 {
     fast_acc = 0;
 }

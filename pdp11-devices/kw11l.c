@@ -1,4 +1,4 @@
-/* kw11l.c: KW11-L line clock (SIMH device CLK) and the simulated time base.
+/* kw11l.c: KW11-L line clock (SIMH device CLK); SET CLK RATE sets the time base.
 
    Register (DESIGN.md section 2), 177546 LKS, vector 100, BR6:
      bit 7  MONITOR  set by every tick; cleared by writing a 0 to it (a 1
@@ -15,10 +15,10 @@
    floor(n * RATE / 60) executed instructions, whatever the host does. Bus
    INIT does not restart the series (the mains keep running).
 
-   Time base: simulated seconds = instructions / RATE (SET CLK RATE=n,
-   default 300000, the KDF11-A's typical speed). Changing RATE keeps the time
-   continuous: pending ticks and trace samples keep their simulated times. SIMH's SET THROTTLE paces the run to the wall clock when asked;
-   nothing here reads the host's clock.
+   Time base (time_base.c): simulated seconds = instructions / RATE (SET CLK
+   RATE=n, default 300000, the KDF11-A's typical speed). Changing RATE keeps
+   the time continuous: pending ticks and trace samples keep their simulated
+   times (every device registers for it; kwl_rate_changed is the clock's part).
 
    Devices SIMH paces from the clock (console polling, RQ's timer) read
    tmr_poll/tmxr_poll: they are set to RATE/60 instructions, a constant.
@@ -53,8 +53,6 @@ extern t_bool sim_idle_enab;            /* sim_timer.c: SET CPU IDLE */
 #define RATE_MAX 100000000
 #define TICKS_PER_S 60
 
-int32 robot_rate = 300000;
-static double base_time_s, base_instr;  /* time base, rebased when RATE changes */
 static int32 lks;
 static int32 tick_acc;                  /* remainder of the exact tick series */
 static uint32 ticks;                    /* ticks since power-up */
@@ -72,30 +70,6 @@ static t_stat kwl_set_rate (UNIT *uptr, int32 val, char *cptr, void *desc);
 static t_stat kwl_show_rate (FILE *st, UNIT *uptr, int32 val, void *desc);
 static t_stat kwl_show_state (FILE *st, UNIT *uptr, int32 val, void *desc);
 static t_stat kwl_set_realtime (UNIT *uptr, int32 val, char *cptr, void *desc);
-
-double robot_time (void)
-{
-    return base_time_s + (sim_gtime () - base_instr) / (double) robot_rate;
-}
-
-void robot_rescale (UNIT *uptr, int32 old_rate)
-{
-    int32 left = sim_is_active (uptr);          /* instructions to go, plus one */
-    if (left > 0) {
-        double t = (double) (left - 1) * robot_rate / old_rate;
-        sim_cancel (uptr);
-        sim_activate (uptr, (int32) (t + 0.5));
-    }
-}
-
-int32 robot_share (int32 per_second, int32 *acc)
-{
-    int32 n;
-    *acc += robot_rate;
-    n = *acc / per_second;
-    *acc -= n * per_second;
-    return n > 0 ? n : 1;
-}
 
 static DIB kwl_dib = {
     IOBA_CLK, IOLN_CLK, &kwl_rd, &kwl_wr,
@@ -194,7 +168,6 @@ static t_stat kwl_set_rate (UNIT *uptr, int32 val, char *cptr, void *desc)
 {
     char *end;
     long r;
-    int32 old;
     if (cptr == NULL || *cptr == 0)
         return SCPE_MISVAL;
     r = strtol (cptr, &end, 10);
@@ -203,17 +176,15 @@ static t_stat kwl_set_rate (UNIT *uptr, int32 val, char *cptr, void *desc)
                 RATE_MIN, RATE_MAX);
         return SCPE_ARG;
     }
-    plant_dev_catch_up ();                       /* the plant lives in the old time */
-    base_time_s = robot_time ();
-    base_instr = sim_gtime ();
-    old = robot_rate;
-    robot_rate = (int32) r;
-    tmr_poll = tmxr_poll = robot_rate / TICKS_PER_S;
-    robot_rescale (&kwl_unit, old);              /* the next tick keeps its time */
-    tick_acc = 0;
-    plant_dev_rate_changed (old);
-    console_pacing_rate_changed ();
+    robot_set_rate ((int32) r);                 /* time_base.c: every device is told */
     return SCPE_OK;
+}
+
+void kwl_rate_changed (int32 old_rate)
+{
+    tmr_poll = tmxr_poll = robot_rate / TICKS_PER_S;
+    robot_rescale (&kwl_unit, old_rate);         /* the next tick keeps its time */
+    tick_acc = 0;
 }
 
 static t_stat kwl_set_realtime (UNIT *uptr, int32 val, char *cptr, void *desc)

@@ -169,6 +169,11 @@ uint16 plant_dev_counter (int axis)
     return plant_counter (&robot_plant, axis);
 }
 
+void plant_dev_rate_changing (int32 old_rate)  /* still in the old time */
+{
+    plant_dev_catch_up ();
+}
+
 void plant_dev_rate_changed (int32 old_rate)
 {
     robot_rescale (&plant_unit, old_rate);
@@ -208,23 +213,12 @@ static t_stat plant_reset (DEVICE *dptr)    /* bus INIT does not move the robot 
 
 static t_stat plant_attach (UNIT *uptr, char *cptr)
 {
-    FILE *f;
-    char *name;
+    t_stat r;
     if (uptr->flags & UNIT_ATT)
         plant_detach (uptr);
-    if ((f = fopen (cptr, "w")) == NULL) {
-        printf ("PLANT: cannot write the trace %s: %s\n", cptr, strerror (errno));
-        return SCPE_OPENERR;
-    }
-    if ((name = (char *) malloc (strlen (cptr) + 1)) == NULL) {
-        fclose (f);
-        return SCPE_MEM;
-    }
-    strcpy (name, cptr);
-    uptr->filename = name;
-    uptr->fileref = f;
-    uptr->flags |= UNIT_ATT;
-    fputs ("time_s,axis,dac,vcmd,vel,pos,counter,grip,contact,missed\n", f);
+    if ((r = robot_attach_text (uptr, cptr, "PLANT: cannot write the trace")) != SCPE_OK)
+        return r;
+    fputs ("time_s,axis,dac,vcmd,vel,pos,counter,grip,contact,missed\n", uptr->fileref);
     plant_dev_catch_up ();
     schedule_sample ();
     return SCPE_OK;
@@ -235,11 +229,7 @@ static t_stat plant_detach (UNIT *uptr)
     if (!(uptr->flags & UNIT_ATT))
         return SCPE_OK;
     sim_cancel (uptr);
-    fclose (uptr->fileref);
-    free (uptr->filename);
-    uptr->fileref = NULL;
-    uptr->filename = NULL;
-    uptr->flags &= ~UNIT_ATT;
+    robot_detach_text (uptr);
     return SCPE_OK;
 }
 

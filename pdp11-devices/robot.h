@@ -7,11 +7,17 @@
 #include "plant.h"
 #include "gripper.h"
 
-/* Time base (kw11l.c): simulated time = executed instructions / rate. */
+/* Time base (time_base.c): simulated time = executed instructions / rate. */
 extern int32 robot_rate;                 /* instructions per simulated second */
 double robot_time (void);                /* simulated seconds since power-up */
 int32 robot_share (int32 per_second, int32 *acc);  /* next interval of an exact n/s series */
 void robot_rescale (UNIT *uptr, int32 old_rate);   /* keep an event's simulated time */
+typedef void (*robot_rate_hook) (int32 old_rate);
+void robot_on_rate_change (robot_rate_hook before, robot_rate_hook after);
+void robot_set_rate (int32 rate);                  /* SET CLK RATE: hooks, new base */
+
+/* The clock (kw11l.c): its part of a rate change. */
+void kwl_rate_changed (int32 old_rate);
 
 /* Plant glue (plant_dev.c): the plant as the bus devices see it. */
 extern plant robot_plant;
@@ -24,20 +30,28 @@ void plant_dev_gripper_lines (int step, int dir);  /* DRV11 OUTBUF bits 4, 5 */
 int plant_dev_gripper_contact (void);             /* DRV11 REQ B */
 void drv11_lines_changed (void);                  /* REQ lines may have moved */
 void plant_dev_init (void);
-void plant_dev_rate_changed (int32 old_rate);                        /* power-up state */
+void plant_dev_rate_changing (int32 old_rate);    /* integrate up to now, old time */
+void plant_dev_rate_changed (int32 old_rate);     /* pending samples keep their times */
 void plant_dev_command_done (void);               /* after each SCP command */
+
+/* Text files written by a device (text_attach.c): `what` starts the error message. */
+t_stat robot_attach_text (UNIT *uptr, char *cptr, const char *what);
+void robot_detach_text (UNIT *uptr);
 
 /* EXAMINE/DEPOSIT at 160000-177777 reach the I/O page (io_page_examine.c). */
 void io_page_examine_install (void);
 
 /* Console input pacing (console_pacing.c). */
 void console_pacing_install (void);
-void console_pacing_rate_changed (void);
+void console_pacing_rate_changed (int32 old_rate);
 
 /* RL02 write-through (rl_durable.c). */
 void rl_durable_install (void);
 
-extern DEVICE kwl_dev, drv_dev, aav_dev, plant_dev;
+/* The lab bench's device (lab.c): its part of a rate change. */
+void lab_rate_changed (int32 old_rate);
+
+extern DEVICE kwl_dev, drv_dev, aav_dev, plant_dev, lab_dev;
 
 /* Byte writes (SIMH passes the byte in data<7:0>, PA<0> says which half). */
 #define MERGE_BYTE(old, data, pa, access) \

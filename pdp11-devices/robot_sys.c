@@ -6,7 +6,8 @@
    another name, and this file defines the sim_devices[] SIMH uses. It is
    filled at start-up from the stock list: SIMH's CLK (clk_dev, the
    wall-calibrated line clock) is replaced, in its place, by the project's
-   KW11-L (kw11l.c, also named CLK); DRV11, AAV11 and PLANT are appended.
+   KW11-L (kw11l.c, also named CLK); DRV11, AAV11, PLANT and LAB (lab.c,
+   the lab bench's pacing, pause and memory watch) are appended.
    Everything else is SIMH's own, in SIMH's order.
 
    What still refers to the stock clock: pdp11_cpumod.c sets clk_fie,
@@ -60,7 +61,14 @@ static void robot_vm_init (void)
     add_device (&n, &drv_dev);
     add_device (&n, &aav_dev);
     add_device (&n, &plant_dev);
+    add_device (&n, &lab_dev);
     sim_devices[n] = NULL;
+    /* a SET CLK RATE: the plant integrates up to now in the old time; then the
+       clock, the plant, the console and the lab keep their events' times */
+    robot_on_rate_change (NULL, &kwl_rate_changed);
+    robot_on_rate_change (&plant_dev_rate_changing, &plant_dev_rate_changed);
+    robot_on_rate_change (NULL, &console_pacing_rate_changed);
+    robot_on_rate_change (NULL, &lab_rate_changed);
     plant_dev_init ();
     console_pacing_install ();
     io_page_examine_install ();

@@ -1,0 +1,59 @@
+"""`lab`: the lab bench, the console, the robot, a scope and the servo's words in a
+browser page (what make lab starts; docs/lab.md)."""
+import argparse
+import asyncio
+from pathlib import Path
+
+from harness.commands.console import ConsoleError, working_disk
+from harness.disk import DiskError
+from harness.lab.server import NODE_MODULES, serve
+from harness.scripted_machine import KERNEL_MAP, read_kernel_map
+from harness.simh import PDP11
+
+ERRORS = (ConsoleError, DiskError)
+
+DESCRIPTION = """\
+The lab bench: the FORTH console, the robot, a scope and the servo in a browser page.
+
+Boots the FORTH on the working disk (local/robot.dsk, as make run) and serves
+the page on 127.0.0.1 only; open the URL it prints (it holds this session's
+token; the server opens no browser). Leave with BYE in the page's terminal (the
+FORTH FLUSHes its blocks, the disk is detached) or ^C here."""
+
+
+def configure(parser):
+    parser.description = DESCRIPTION
+    parser.formatter_class = argparse.RawDescriptionHelpFormatter
+    parser.add_argument("--disk", metavar="IMAGE", help="disk image to use and change "
+                        "(default: local/robot.dsk)")
+    parser.add_argument("--port", type=int, default=8023,
+                        help="port on 127.0.0.1 (default 8023; 0 = any free port)")
+    parser.add_argument("--speed", choices=("real", "x10", "full"), default="real",
+                        help="pace at start (default: the 11/23's real pace)")
+    parser.add_argument("--simulator", default=str(PDP11), help=argparse.SUPPRESS)
+    parser.set_defaults(run=run)
+
+
+def announce(url):
+    print(f"[lab] the lab bench is at {url}", flush=True)
+    print("[lab] open it in a browser on this machine; leave with BYE in the page "
+          "(or ^C here)", flush=True)
+
+
+def run(args):
+    disk = working_disk(args.disk)
+    if not Path(args.simulator).is_file():
+        raise ConsoleError(f"{args.simulator}: no simulator (run make)")
+    if not (NODE_MODULES / "@xterm" / "xterm").is_dir():
+        raise ConsoleError(f"{NODE_MODULES}: the page's libraries are missing "
+                           "(make lab-assets)")
+    symbols = read_kernel_map(KERNEL_MAP)
+    try:
+        safe = asyncio.run(serve(args.simulator, disk, symbols, args.port, args.speed,
+                                    announce))
+    except OSError as err:
+        raise ConsoleError(f"cannot serve on 127.0.0.1:{args.port}: {err.strerror}") from err
+    if safe is None:
+        print("[lab] the simulator exited on its own: blocks UPDATEd since the last "
+              f"FLUSH, if any, were not written to {disk}")
+    return 0 if safe else 1

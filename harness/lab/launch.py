@@ -1,0 +1,66 @@
+"""Start a lab as a user would, in its own process, and a headless Chromium to look
+at it: shared by the lab's tests and its benchmark."""
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+CHROMIUM, CHROMEDRIVER = Path("/usr/bin/chromium"), Path("/usr/bin/chromedriver")
+URL = re.compile(r"http://127\.0\.0\.1:(\d+)/\?token=(\S+)")
+
+
+class LabProcess:
+    """`python -m harness lab` on a copy of the pristine disk, on a free port."""
+
+    def __init__(self, tmp, speed="full"):
+        disk = Path(tmp) / "robot.dsk"
+        shutil.copyfile(ROOT / "build" / "robot.dsk", disk)
+        self.log = Path(tmp) / "lab.log"
+        with open(self.log, "w") as log:
+            self.proc = subprocess.Popen(
+                [sys.executable, "-m", "harness", "lab", "--port", "0", "--speed", speed,
+                 "--disk", str(disk)], cwd=ROOT, stdout=log, stderr=subprocess.STDOUT)
+        deadline = time.monotonic() + 30
+        while not (m := URL.search(self.text())):
+            if self.proc.poll() is not None or time.monotonic() > deadline:
+                self.proc.kill()
+                raise RuntimeError(f"the lab server did not start:\n{self.text()}")
+            time.sleep(0.05)
+        self.url, self.port, self.token = m.group(0), int(m.group(1)), m.group(2)
+
+    def text(self):
+        return self.log.read_text()
+
+    def simulator_pid(self):
+        children = Path(f"/proc/{self.proc.pid}/task/{self.proc.pid}/children").read_text()
+        return int(children.split()[0])
+
+    def stop(self):
+        """^C, as a user in the shell would; the exit status."""
+        if self.proc.poll() is None:
+            self.proc.send_signal(signal.SIGINT)
+        try:
+            return self.proc.wait(timeout=60)
+        except subprocess.TimeoutExpired:
+            self.proc.kill()
+            raise
+
+
+def have_browser():
+    return CHROMIUM.exists() and CHROMEDRIVER.exists()
+
+
+def headless_browser(width=1920, height=1080):
+    """Debian's Chromium through its chromium-driver (Selenium downloads nothing)."""
+    from selenium import webdriver
+    from selenium.webdriver.chrome.service import Service
+    options = webdriver.ChromeOptions()
+    options.binary_location = str(CHROMIUM)
+    for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
+                f"--window-size={width},{height}", "--hide-scrollbars"):
+        options.add_argument(arg)
+    return webdriver.Chrome(service=Service(str(CHROMEDRIVER)), options=options)

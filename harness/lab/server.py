@@ -1,0 +1,201 @@
+"""The lab bench's web server (aiohttp): the page, its assets, one websocket.
+
+Messages to the page (JSON): hello (end stops, servo names, the console so far),
+con (console output), data (plant samples, simulated time, run state, the
+servo's words; about 30 a second), ended. From the page: key (typed text), speed
+(real, x10, full), pause, run, step. Who may connect: guard.py.
+"""
+import asyncio
+import json
+import signal
+import sys
+from pathlib import Path
+
+from aiohttp import WSMsgType, web
+
+from harness.lab import guard
+from harness.lab.feed import plant_row, thin, words_of
+from harness.lab.servo_watch import PER_AXIS, SINGLE, ServoWatch
+from harness.lab.session import SPEEDS, Simulator
+
+ROOT = Path(__file__).resolve().parents[2]
+STATIC = Path(__file__).resolve().parent / "static"
+NODE_MODULES = ROOT / "build" / "lab" / "node_modules"
+VENDOR = {  # URL name -> file installed by `npm ci` (mk/lab.mk)
+    "xterm.js": "@xterm/xterm/lib/xterm.js",
+    "xterm.css": "@xterm/xterm/css/xterm.css",
+    "addon-fit.js": "@xterm/addon-fit/lib/addon-fit.js",
+}
+FRAME_S = 1 / 30                 # how often plant rows and the servo's words go out
+PROBE_S = 1.0                    # how often the dictionary's heads are looked at
+ROWS_PER_FRAME = 400             # more than this (fast runs) are thinned per axis
+SCROLLBACK = 1 << 17
+
+
+class Lab:
+    """The simulator, the servo watch and the connected pages."""
+
+    def __init__(self, simulator, disk, symbols, speed="real"):
+        self.sim = Simulator(simulator, disk, self.on_console, self.on_lab, self.on_ended,
+                             speed)
+        self.watch = ServoWatch(symbols)
+        self.pages = set()
+        self.scrollback = bytearray()
+        self.rows = []
+        self.status = {"time": 0.0, "tick": 0, "state": "run", "speed": speed}
+        self.servo = {}
+        self.done = asyncio.Event()
+        self.safe = None
+
+    # ---- from the simulator ---------------------------------------------------------
+    def on_console(self, data):
+        self.scrollback += data
+        del self.scrollback[:-SCROLLBACK]
+        self.broadcast({"t": "con", "d": data.decode("latin-1")})
+
+    def on_lab(self, row):
+        if row.kind == "P":
+            sample = plant_row(row)
+            if sample:
+                self.rows.append(sample)
+                del self.rows[:-20 * ROWS_PER_FRAME]   # a page that cannot keep up skips
+        elif row.kind == "W":
+            self.status["time"], self.status["tick"], words = words_of(row)
+            self.servo = self.watch.values(words)
+        elif row.kind == "M":
+            for command in self.watch.on_memory(*words_of(row)):
+                self.sim.command(command)
+        elif row.kind == "A":
+            self.watch.on_addresses([int(a, 8) for a in row.fields])
+        elif row.kind == "S":
+            self.status["time"] = float(row.fields[0])
+            self.status["state"] = row.fields[1]
+        elif row.kind == "E":
+            print(f"[lab] the LAB device refused a command: {','.join(row.fields)}",
+                  file=sys.stderr)
+
+    def on_ended(self, safe):
+        self.safe = safe
+        self.broadcast({"t": "ended", "safe": safe})
+        self.done.set()
+
+    # ---- to the pages ---------------------------------------------------------------
+    def broadcast(self, message):
+        text = json.dumps(message)
+        for ws in list(self.pages):
+            if not ws.closed:
+                asyncio.ensure_future(ws.send_str(text))
+
+    def hello(self):
+        return {"t": "hello", "stops": self.sim.stops,
+                "per_axis": PER_AXIS, "single": SINGLE, "status": self.status,
+                "con": self.scrollback.decode("latin-1")}
+
+    async def frames(self):
+        while not self.done.is_set():
+            await asyncio.sleep(FRAME_S)
+            if self.pages:
+                rows, self.rows = thin(self.rows, ROWS_PER_FRAME), []
+                self.broadcast({"t": "data", "rows": rows, "status": self.status,
+                                "servo": self.servo})
+            else:
+                self.rows = []
+
+    async def probes(self):
+        while not self.done.is_set():
+            for command in self.watch.probe():
+                self.sim.command(command)
+            await asyncio.sleep(PROBE_S)
+
+    # ---- from the pages -------------------------------------------------------------
+    def on_message(self, message):
+        kind = message.get("t")
+        if kind == "key" and isinstance(message.get("d"), str):
+            self.sim.keys(message["d"].encode("latin-1", "replace"))
+        elif kind == "speed" and message.get("v") in SPEEDS:
+            self.status["speed"] = message["v"]
+            self.sim.command(f"speed {SPEEDS[message['v']]}")
+        elif kind in ("pause", "run", "step"):
+            self.sim.command(kind)
+
+
+def make_app(lab, token, port_of):
+    """The aiohttp application; port_of() gives the port it listens on."""
+
+    def check(request, websocket=False):
+        why = guard.refusal(request.host, request.query.get("token"),
+                            None if websocket else request.cookies.get(guard.COOKIE),
+                            token, port_of(), request.headers.get("Origin"), websocket)
+        if why:
+            raise web.HTTPForbidden(text=f"lab: {why}\n")
+
+    async def page(request):
+        check(request)
+        response = web.FileResponse(STATIC / "lab.html")
+        response.set_cookie(guard.COOKIE, token, httponly=True, samesite="Strict")
+        response.headers["Cache-Control"] = "no-store"
+        return response
+
+    async def asset(request):
+        check(request)
+        name = request.match_info["name"]
+        path = STATIC / name if name in {p.name for p in STATIC.iterdir()} else None
+        if name in VENDOR:
+            path = NODE_MODULES / VENDOR[name]
+        if path is None or not path.is_file():
+            raise web.HTTPNotFound(text=f"lab: no asset {name} (run make lab-assets)\n")
+        return web.FileResponse(path)
+
+    async def socket(request):
+        check(request, websocket=True)
+        ws = web.WebSocketResponse(heartbeat=20)
+        await ws.prepare(request)
+        lab.pages.add(ws)
+        await ws.send_str(json.dumps(lab.hello()))
+        try:
+            async for msg in ws:
+                if msg.type == WSMsgType.TEXT:
+                    try:
+                        lab.on_message(json.loads(msg.data))
+                    except (ValueError, AttributeError):
+                        pass                      # not a message of ours: ignored
+        finally:
+            lab.pages.discard(ws)
+        return ws
+
+    app = web.Application()
+    app.add_routes([web.get("/", page), web.get("/ws", socket),
+                    web.get("/assets/{name}", asset)])
+    return app
+
+
+async def serve(simulator, disk, symbols, port, speed, announce):
+    """Run the lab until the user leaves; True if every UPDATEd block was written
+    and the disk detached, None if the simulator exited by itself."""
+    token = guard.new_token()
+    lab = Lab(simulator, disk, symbols, speed)
+    runner = None
+
+    def port_of():
+        return runner.addresses[0][1]
+
+    runner = web.AppRunner(make_app(lab, token, port_of), access_log=None)
+    await runner.setup()
+    site = web.TCPSite(runner, "127.0.0.1", port)
+    await site.start()
+    lab.sim.start()
+    announce(f"http://127.0.0.1:{port_of()}/?token={token}")
+    loop = asyncio.get_running_loop()
+    tasks = [asyncio.ensure_future(lab.frames()), asyncio.ensure_future(lab.probes())]
+    try:
+        loop.add_signal_handler(signal.SIGINT, lambda: asyncio.ensure_future(lab.sim.close()))
+        loop.add_signal_handler(signal.SIGTERM, lambda: asyncio.ensure_future(lab.sim.close()))
+        await lab.done.wait()
+        await asyncio.sleep(0.2)                  # the last messages reach the pages
+    finally:
+        for task in tasks:
+            task.cancel()
+        for ws in list(lab.pages):                # else cleanup waits for the pages to go
+            await ws.close()
+        await runner.cleanup()
+    return lab.safe

@@ -1,0 +1,88 @@
+"""Which memory words the lab watches: the 1983 servo's variables, found by name
+in the running FORTH's dictionary (pure logic: commands out, memory rows in).
+
+Every probe the lab asks the LAB device for the FORTH vocabulary's four chain
+heads and DP (HERE). When they change (a LOAD, a FORGET) it dumps the dictionary,
+finds the servo's words (block 1000's arrays and Dir, defined above the kernel's FENCE) and watches their cells.
+"""
+from harness.lab.dictionary import Memory, find_bodies
+
+ORIGIN = 0o2000                      # the kernel and the dictionary start here
+BODY = 4                             # a kernel VAR's value follows its code field
+PER_AXIS = ("Desire.Pos", "State", "Velocity", "0-Vel", "Command.Status", "MaxVel")
+SINGLE = ("Dir",)
+
+
+def signed(word):
+    return word - 0o200000 if word & 0o100000 else word
+
+
+class ServoWatch:
+    def __init__(self, symbols):
+        self.vocabulary = symbols["FORTH"] + BODY    # its four chain heads
+        self.dp = symbols["DP"] + BODY
+        self.fence = symbols["FENCE"] + BODY      # the kernel ends here: its STATE is not block 1000's
+        self.memory = Memory()
+        self.seen = None               # chain heads and HERE at the last dictionary dump
+        self.dump_end = None           # last address of the dump under way
+        self.layout = []               # (name, axis or None) per watched word
+        self.pending = ([], [])        # addresses asked for, and their layout
+        self.found = {}
+
+    def probe(self):
+        """The commands that read the chain heads and HERE."""
+        return [f"dump {self.vocabulary:o} 4", f"dump {self.fence:o} 1", f"dump {self.dp:o} 1"]
+
+    def _state(self):
+        return tuple(self.memory.word(self.vocabulary + 2 * i) for i in range(4)) + (
+            self.memory.word(self.fence), self.memory.word(self.dp))
+
+    def on_memory(self, address, words):
+        """A dump row arrived; the commands it calls for (a dictionary dump, a new
+        watch list), in order."""
+        self.memory.store(address, words)
+        last = address + 2 * len(words) - 2
+        if address == self.dp and self.dump_end is None:
+            state = self._state()
+            if state != self.seen and None not in state:
+                self.seen = state
+                here = state[-1]
+                self.dump_end = here - 2
+                return [f"dump {ORIGIN:o} {(here - ORIGIN) // 2}"]
+        elif self.dump_end is not None and address <= self.dump_end <= last:
+            self.dump_end = None
+            return [self._watch_command()]
+        return []
+
+    def _watch_command(self):
+        fence = self.memory.word(self.fence)
+        self.found = {name: body for name, body in
+                      find_bodies(self.memory, self.vocabulary, PER_AXIS + SINGLE).items()
+                      if body > fence}
+        layout, addresses = [], []
+        for name in PER_AXIS:
+            if name in self.found:
+                for axis in range(4):
+                    layout.append((name, axis))
+                    addresses.append(self.found[name] + 2 * axis)
+        for name in SINGLE:
+            if name in self.found:
+                layout.append((name, None))
+                addresses.append(self.found[name])
+        self.pending = (addresses, layout)
+        return "watch " + " ".join(f"{a:o}" for a in addresses)
+
+    def on_addresses(self, addresses):
+        """The device's A row: from now on W rows carry these addresses."""
+        wanted, layout = self.pending
+        self.layout = layout if addresses == wanted else []
+
+    def values(self, words):
+        """{name: [x, y, z, t]} or {name: value} from a W row's words (signed)."""
+        table = {}
+        for (name, axis), word in zip(self.layout, words):
+            if axis is None:
+                table[name] = signed(word)
+            else:
+                table.setdefault(name, [None] * 4)[axis] = signed(word)
+        return table

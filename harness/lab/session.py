@@ -1,0 +1,191 @@
+"""The simulator behind the lab page: SIMH on a pty, and the LAB device's stream.
+
+The machine boots as in `make run`, with the LAB device (pdp11-devices/lab.c)
+attached to a FIFO in a private temporary directory; a second FIFO carries the
+lab's commands (speed, pause, step, watch, dump) to the device. Everything is
+read on the asyncio loop, so the simulator never waits long for a reader.
+Leaving (BYE, ^D, ^C or QUIT at sim>, or close()) is the console's: FLUSH, check,
+detach, quit (harness/console_session.py).
+"""
+import asyncio
+import os
+import re
+import tempfile
+from pathlib import Path
+
+import pexpect
+
+from harness import simh
+from harness.console_session import KERNEL, leave, say
+from harness.console_watch import Leave, LineWatcher
+from harness.lab.feed import Lines, lab_row
+from harness.simh import MACHINE_INI, ROOT
+
+SPEEDS = {"real": 1, "x10": 10, "full": 0}
+STOPS = re.compile(rb"^\s+([XYZT])\s+\S+\s+\S+\s+\S+\s+\S+\s+(-?[\d.]+)\s+(-?[\d.]+)\s+\S+\s*$",
+                   re.M)
+READ_CHUNK = 1 << 16
+
+
+def end_stops(text):
+    """{axis letter: (pmin, pmax)} from SHOW PLANT's parameter table."""
+    return {m.group(1).decode(): (float(m.group(2)), float(m.group(3)))
+            for m in STOPS.finditer(text)}
+
+
+def plant_stops(simulator):
+    """The end stops the plant powers up with (the lab's machine starts so)."""
+    return end_stops(simh.run("show plant\n", simulator=simulator, timeout=30).encode())
+
+
+def boot_script(disk, lab_fifo, speed, kernel=KERNEL):
+    return (f"do {MACHINE_INI}\n"
+            f"attach rl0 {Path(disk).resolve()}\n"
+            f"attach lab {lab_fifo}\n"
+            f"set lab speed={speed}\n"
+            f"load {kernel}\n"
+            "go\n")
+
+
+class Simulator:
+    """One lab machine. Callbacks (called on the loop): console(bytes),
+    lab(LabRow), ended(safe: bool, or None when the simulator exited by itself)."""
+
+    def __init__(self, simulator, disk, console, lab, ended, speed="real"):
+        self.callbacks = console, lab, ended
+        self.simulator, self.disk, self.speed = simulator, disk, speed
+        self.tmp = tempfile.TemporaryDirectory(prefix="lab-")
+        self.watcher = LineWatcher()
+        self.child = None
+        self.fds = {}
+        self.leaving = False
+        self.stops = plant_stops(simulator)
+
+    def start(self):
+        loop = asyncio.get_running_loop()
+        tmp = Path(self.tmp.name)
+        lab_fifo = tmp / "lab"
+        for fifo in (lab_fifo, tmp / "lab.ctl"):
+            os.mkfifo(fifo, 0o600)
+        # The reader first (SIMH's open for writing waits for one); the command FIFO
+        # is held open read-write so neither side's open waits for the other.
+        self.fds["lab"] = os.open(lab_fifo, os.O_RDONLY | os.O_NONBLOCK)
+        self.ctl = os.open(tmp / "lab.ctl", os.O_RDWR | os.O_NONBLOCK)
+        ini = tmp / "lab.ini"
+        ini.write_text(boot_script(self.disk, lab_fifo, SPEEDS[self.speed]))
+        self.child = pexpect.spawn(str(self.simulator), [str(ini)], timeout=None,
+                                   dimensions=(24, 80), cwd=str(ROOT))
+        self.child.delaybeforesend = None
+        lab_lines = Lines()
+        console, lab, _ = self.callbacks
+
+        def read_lab(data):
+            for line in lab_lines.feed(data):
+                row = lab_row(line)
+                if row:
+                    lab(row)
+
+        self._watch(loop, "lab", read_lab)
+        self.fds["pty"] = self.child.child_fd
+
+        def read_console(data):
+            self.watcher.output(data)             # is SIMH's sim> up?
+            console(data)
+        self._watch(loop, "pty", read_console)
+
+    def _watch(self, loop, name, handle):
+        fd = self.fds[name]
+
+        def readable():
+            try:
+                data = os.read(fd, READ_CHUNK)
+            except BlockingIOError:
+                return
+            except OSError:
+                data = b""
+            if not data:
+                self._unwatch(name)
+                if name == "pty" and not self.leaving:
+                    self.leaving = True               # the simulator exited by itself
+                    self._release()
+                    self.callbacks[2](None)
+                return
+            handle(data)
+        loop.add_reader(fd, readable)
+
+    def _unwatch(self, name):
+        fd = self.fds.pop(name, None)
+        if fd is not None:
+            asyncio.get_running_loop().remove_reader(fd)
+            if name != "pty":
+                os.close(fd)
+
+    # ---- from the page ------------------------------------------------------------
+    def keys(self, data):
+        """What the user typed; a way out (BYE, ^D, ^C or QUIT at sim>:
+        harness/console_watch.py) starts leaving, as the console does."""
+        if self.leaving:
+            return
+        try:
+            self.watcher.feed(data)
+        except Leave as way:
+            os.write(self.child.child_fd, way.typed)     # typed ahead of the way out
+            asyncio.get_running_loop().create_task(self.close(way.how))
+            return
+        os.write(self.child.child_fd, data)
+
+    def command(self, text):
+        """A line to the LAB device (speed X, pause, run, step, watch, dump)."""
+        try:
+            os.write(self.ctl, text.encode() + b"\n")
+        except BlockingIOError:
+            pass                                    # the device is not reading: dropped
+
+    # ---- leaving --------------------------------------------------------------------
+    async def close(self, how="BYE"):
+        """FLUSH, check, detach, quit, as the console does; the report goes to the
+        page and the shell; then the `ended` callback with True when every block
+        was written (None when the simulator had already exited)."""
+        if self.leaving or self.child is None:
+            return
+        self.leaving = True
+        self.command("run")
+        self._unwatch("pty")
+        echo = _Echo(asyncio.get_running_loop(), self.callbacks[0])
+        try:
+            safe = await asyncio.to_thread(self._leave, how, echo)
+        finally:
+            self._release()
+        self.callbacks[2](safe)
+
+    def _release(self):
+        for name in list(self.fds):
+            self._unwatch(name)
+        os.close(self.ctl)
+        self.child.close(force=True)
+        self.tmp.cleanup()
+
+    def _leave(self, how, echo):
+        if not self.child.isalive():
+            return None
+        if how != "BYE":
+            say(f"{how}: leaving; the FORTH FLUSHes its blocks first")
+        gone = leave(self.child, self.disk, None, devices=("lab",), echo=echo)
+        report = gone.report() + ["Bye."]
+        say(*report)
+        echo.write("".join(f"\r\n[lab] {line}" for line in report).encode() + b"\r\n")
+        return gone.safe
+
+
+class _Echo:
+    """A binary 'file' for pexpect's logfile_read that hands what the machine
+    prints to the page (from the leaving thread, onto the loop)."""
+
+    def __init__(self, loop, console):
+        self.loop, self.console = loop, console
+
+    def write(self, data):
+        self.loop.call_soon_threadsafe(self.console, bytes(data))
+
+    def flush(self):
+        pass

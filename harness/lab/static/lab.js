@@ -1,0 +1,438 @@
+// The lab bench page: a terminal, the robot, a scope and the servo's words,
+// all fed by one websocket (harness/lab/server.py). The page only observes the
+// machine, except for what the user types and the time controls.
+"use strict";
+
+const AXES = ["X", "Y", "Z", "T"];
+const COLORS = ["#58a6ff", "#3fb950", "#d29922", "#bc8cff"];
+const COUNTS_PER_UNIT = [800, 800, 800, 16000 / 360];     // plant.c: inches, degrees
+const UNITS = ["in", "in", "in", "\u00b0"];
+const KEEP_S = 40;                 // seconds of trace kept per axis (the widest window + margin)
+const GAP_S = 1 / 30;              // further apart than this: ticks the fast run did not report
+const ROW = { t: 0, axis: 1, dac: 2, vcmd: 3, vel: 4, pos: 5, counter: 6 };
+
+// ---- the connection ----------------------------------------------------------------
+const params = new URLSearchParams(location.search);
+const token = params.get("token") || sessionStorage.getItem("labToken");
+if (params.get("token")) {          // off the address bar (and the projector), kept for reloads
+  sessionStorage.setItem("labToken", token);
+  history.replaceState(null, "", location.pathname);
+}
+const socket = new WebSocket(`ws://${location.host}/ws?token=${encodeURIComponent(token || "")}`);
+const send = (message) => socket.readyState === 1 && socket.send(JSON.stringify(message));
+
+const lab = {                      // everything the page knows; window.lab for tests
+  stops: {}, status: { time: 0, tick: 0, state: "run", speed: "real" },
+  servo: {}, perAxis: [], single: [], traces: AXES.map(() => []), latest: [null, null, null, null],
+  rowsSeen: 0, frozenAt: null, axis: 0, window: 2, ended: false, connected: false, dirty: true,
+};
+window.lab = lab;
+
+// ---- the terminal --------------------------------------------------------------------
+const term = new Terminal({
+  fontFamily: '"DejaVu Sans Mono", monospace', fontSize: 17, cursorBlink: true,
+  scrollback: 5000, theme: { background: "#000000", foreground: "#e6edf3", cursor: "#f0883e" },
+});
+const fit = new FitAddon.FitAddon();
+term.loadAddon(fit);
+term.open(document.getElementById("terminal"));
+function fitTerminal() {           // the largest font that shows the FORTH's 80 columns
+  for (let size = 19; size >= 12; size--) {
+    term.options.fontSize = size;
+    const dims = fit.proposeDimensions();
+    if (dims && dims.cols >= 80) break;
+  }
+  fit.fit();
+}
+fitTerminal();
+term.onData((d) => send({ t: "key", d }));
+term.focus();
+lab.screen = () => {               // the terminal's text, for tests
+  const b = term.buffer.active, lines = [];
+  for (let i = 0; i < b.length; i++) lines.push(b.getLine(i).translateToString(true));
+  return lines.join("\n");
+};
+
+socket.onopen = () => { lab.connected = true; };
+socket.onmessage = (event) => {
+  const m = JSON.parse(event.data);
+  if (m.t === "con") term.write(m.d);
+  else if (m.t === "data") takeData(m);
+  else if (m.t === "hello") {
+    Object.assign(lab, { stops: m.stops, perAxis: m.per_axis, single: m.single, status: m.status });
+    term.write(m.con);
+    buildTable();
+    lab.dirty = true;
+  } else if (m.t === "ended") showEnded(m.safe);
+};
+socket.onclose = () => { if (!lab.ended) showEnded(null, "the lab server went away"); };
+
+function showEnded(safe, why) {
+  lab.ended = true;
+  const box = document.getElementById("ended");
+  box.textContent = why || (safe ? "Session ended: every block written, disk detached. Bye."
+                                 : "Session ended: see the console for what was not saved.");
+  box.hidden = false;
+  setBadge("ended", "ENDED");
+  document.querySelectorAll("header button").forEach((b) => { b.disabled = true; });
+}
+
+function takeData(m) {
+  lab.dirty = true;
+  lab.status = m.status;
+  lab.servo = m.servo;
+  for (const row of m.rows) {
+    const trace = lab.traces[row[ROW.axis]];
+    trace.push(row);
+    lab.latest[row[ROW.axis]] = row;
+    lab.rowsSeen++;
+  }
+  const cutoff = lab.status.time - KEEP_S;
+  for (const trace of lab.traces) {
+    let drop = 0;
+    while (drop < trace.length && trace[drop][ROW.t] < cutoff) drop++;
+    if (drop) trace.splice(0, drop);
+  }
+}
+
+// ---- time control ----------------------------------------------------------------------
+function setBadge(kind, text) {
+  const badge = document.getElementById("state");
+  badge.className = "badge " + kind;
+  badge.textContent = text;
+}
+document.querySelectorAll("#speeds button").forEach((b) =>
+  b.addEventListener("click", () => send({ t: "speed", v: b.dataset.speed })));
+document.getElementById("pause").addEventListener("click", () =>
+  send({ t: lab.status.state === "pause" ? "run" : "pause" }));
+document.getElementById("step").addEventListener("click", () => send({ t: "step" }));
+
+function drawStatus() {
+  const s = lab.status;
+  document.getElementById("simtime").textContent = `${s.time.toFixed(3)} s`;
+  document.getElementById("simtick").textContent = `tick ${s.tick} \u00b7 60 Hz`;
+  if (!lab.ended) {
+    const speedText = { real: "\u00d71", x10: "\u00d710", full: "FULL" }[s.speed] || "";
+    if (s.state === "pause") setBadge("pause", "PAUSED");
+    else setBadge("run", `RUN ${speedText}`);
+  }
+  document.getElementById("pause").textContent = s.state === "pause" ? "Run" : "Pause";
+  document.querySelectorAll("#speeds button").forEach((b) =>
+    b.classList.toggle("on", b.dataset.speed === s.speed));
+}
+
+// ---- canvases ----------------------------------------------------------------------------
+function sized(canvas) {
+  const ratio = window.devicePixelRatio || 1, r = canvas.getBoundingClientRect();
+  const w = Math.max(1, Math.round(r.width * ratio)), h = Math.max(1, Math.round(r.height * ratio));
+  if (canvas.width !== w || canvas.height !== h) { canvas.width = w; canvas.height = h; }
+  const g = canvas.getContext("2d");
+  g.setTransform(ratio, 0, 0, ratio, 0, 0);
+  return { g, w: r.width, h: r.height };
+}
+
+function stopsOf(axis) {
+  const s = lab.stops[AXES[axis]];
+  return s ? { min: s[0], max: s[1] } : { min: -9600, max: 9600 };
+}
+
+function position(axis) {
+  const row = lab.latest[axis];
+  return row ? row[ROW.pos] : 0;
+}
+
+function atStop(axis) {
+  const s = stopsOf(axis), p = position(axis);
+  return p <= s.min + 0.5 ? -1 : p >= s.max - 0.5 ? 1 : 0;
+}
+
+function goal(axis) {               // Desire.Pos: counts on the axis's counter
+  const d = lab.servo["Desire.Pos"];
+  return d ? d[axis] : null;
+}
+
+function target(axis) {             // the same place on the plant: the counter counts from p0
+  const d = goal(axis), row = lab.latest[axis];
+  return d === null || !row ? null : row[ROW.pos] - row[ROW.counter] + d;
+}
+
+function label(g, text, x, y, color, align = "left", size = 15) {
+  g.fillStyle = color;
+  g.font = `${size}px "DejaVu Sans", sans-serif`;
+  g.textAlign = align;
+  g.fillText(text, x, y);
+}
+
+function units(axis, counts) {
+  return `${(counts / COUNTS_PER_UNIT[axis]).toFixed(3)} ${UNITS[axis]}`;
+}
+
+// ---- the robot ---------------------------------------------------------------------------
+function drawRobot() {
+  const { g, w, h } = sized(document.getElementById("robot"));
+  g.clearRect(0, 0, w, h);
+  const gauge = Math.min(150, w * 0.2), top = 26, bottom = h - 34;
+  const sx = stopsOf(0), sy = stopsOf(1);
+  const spanX = sx.max - sx.min, spanY = sy.max - sy.min;
+  const avail = { w: w - 2 * gauge - 40, h: bottom - top };
+  const scale = Math.min(avail.w / spanX, avail.h / spanY);
+  const bw = spanX * scale, bh = spanY * scale, bx = 20 + (avail.w - bw) / 2, by = top + (avail.h - bh) / 2;
+  const px = (x) => bx + (x - sx.min) * scale, py = (y) => by + bh - (y - sy.min) * scale;
+  // the work area, a grid line every inch, end stops on its edges
+  g.fillStyle = "#0b1220";
+  g.fillRect(bx, by, bw, bh);
+  g.strokeStyle = "#1c2635";
+  g.lineWidth = 1;
+  for (let x = Math.ceil(sx.min / 800) * 800; x <= sx.max; x += 800) {
+    g.beginPath(); g.moveTo(px(x), by); g.lineTo(px(x), by + bh); g.stroke();
+  }
+  for (let y = Math.ceil(sy.min / 800) * 800; y <= sy.max; y += 800) {
+    g.beginPath(); g.moveTo(bx, py(y)); g.lineTo(bx + bw, py(y)); g.stroke();
+  }
+  const edge = (hit, x0, y0, x1, y1) => {
+    g.strokeStyle = hit ? "#ff5c5c" : "#30363d";
+    g.lineWidth = hit ? 7 : 3;
+    g.beginPath(); g.moveTo(x0, y0); g.lineTo(x1, y1); g.stroke();
+  };
+  const stopX = atStop(0), stopY = atStop(1);
+  edge(stopX < 0, bx, by, bx, by + bh);
+  edge(stopX > 0, bx + bw, by, bx + bw, by + bh);
+  edge(stopY < 0, bx, by + bh, bx + bw, by + bh);
+  edge(stopY > 0, bx, by, bx + bw, by);
+  // the gantry: a bridge along y at the carriage's x, the carriage on it
+  const x = position(0), y = position(1);
+  g.strokeStyle = "#6e7681"; g.lineWidth = 10; g.lineCap = "butt";
+  g.beginPath(); g.moveTo(px(x), by); g.lineTo(px(x), by + bh); g.stroke();
+  g.fillStyle = "#c9d1d9";
+  g.fillRect(px(x) - 14, py(y) - 14, 28, 28);
+  g.fillStyle = COLORS[0];
+  g.beginPath(); g.arc(px(x), py(y), 6, 0, 2 * Math.PI); g.fill();
+  const tx = target(0), ty = target(1);
+  if (tx !== null && ty !== null) {
+    g.strokeStyle = "#f0883e"; g.lineWidth = 2.5;
+    g.beginPath(); g.arc(px(tx), py(ty), 18, 0, 2 * Math.PI); g.stroke();
+    g.beginPath(); g.moveTo(px(tx) - 26, py(ty)); g.lineTo(px(tx) + 26, py(ty));
+    g.moveTo(px(tx), py(ty) - 26); g.lineTo(px(tx), py(ty) + 26); g.stroke();
+  }
+  label(g, `x ${units(0, x)}`, bx, h - 10, COLORS[0], "left", 17);
+  label(g, `y ${units(1, y)}`, bx + bw, h - 10, COLORS[1], "right", 17);
+  label(g, "top view", bx + 6, by + 18, "#8b949e", "left", 13);
+  drawZ(g, w - 2 * gauge + 10, top, gauge - 20, bottom - top);
+  drawT(g, w - gauge + 10, top, gauge - 20, bottom - top);
+}
+
+function drawZ(g, x, y, w, h) {                     // z: a height gauge, stops at its ends
+  const s = stopsOf(2), z = position(2), stop = atStop(2), t = target(2);
+  const bar = Math.min(46, w * 0.45), bx = x + (w - bar) / 2, top = y + 10, hh = h - 30;
+  const py = (v) => top + hh - (v - s.min) / (s.max - s.min) * hh;
+  g.fillStyle = "#0b1220"; g.fillRect(bx, top, bar, hh);
+  g.fillStyle = COLORS[2]; g.globalAlpha = 0.35;
+  g.fillRect(bx, py(z), bar, top + hh - py(z)); g.globalAlpha = 1;
+  g.fillStyle = COLORS[2]; g.fillRect(bx - 8, py(z) - 4, bar + 16, 8);
+  for (const [v, hit] of [[s.min, stop < 0], [s.max, stop > 0]]) {
+    g.fillStyle = hit ? "#ff5c5c" : "#30363d";
+    g.fillRect(bx - 12, py(v) - (hit ? 4 : 2), bar + 24, hit ? 8 : 4);
+  }
+  if (t !== null) {
+    g.strokeStyle = "#f0883e"; g.lineWidth = 2.5;
+    g.beginPath(); g.moveTo(bx - 18, py(t)); g.lineTo(bx + bar + 18, py(t)); g.stroke();
+  }
+  label(g, "z", x + w / 2, y + 4, COLORS[2], "center", 17);
+  label(g, units(2, z), x + w / 2, y + h + 24, COLORS[2], "center", 17);
+}
+
+function drawT(g, x, y, w, h) {                     // t: a dial, 0 degrees up
+  const deg = position(3) / COUNTS_PER_UNIT[3], t = target(3), stop = atStop(3);
+  const r = Math.min(w, h) / 2 - 8, cx = x + w / 2, cy = y + h / 2;
+  g.strokeStyle = stop ? "#ff5c5c" : "#30363d"; g.lineWidth = stop ? 6 : 3;
+  g.beginPath(); g.arc(cx, cy, r, 0, 2 * Math.PI); g.stroke();
+  g.strokeStyle = "#30363d"; g.lineWidth = 2;
+  for (let a = 0; a < 360; a += 30) {
+    const q = (a - 90) * Math.PI / 180;
+    g.beginPath(); g.moveTo(cx + Math.cos(q) * (r - 8), cy + Math.sin(q) * (r - 8));
+    g.lineTo(cx + Math.cos(q) * r, cy + Math.sin(q) * r); g.stroke();
+  }
+  const needle = (angle, color, width, length) => {
+    const q = (angle - 90) * Math.PI / 180;
+    g.strokeStyle = color; g.lineWidth = width;
+    g.beginPath(); g.moveTo(cx, cy); g.lineTo(cx + Math.cos(q) * length, cy + Math.sin(q) * length);
+    g.stroke();
+  };
+  if (t !== null) needle(t / COUNTS_PER_UNIT[3], "#f0883e", 2.5, r - 4);
+  needle(deg, COLORS[3], 6, r - 14);
+  label(g, "t", x + w / 2, y + 4, COLORS[3], "center", 17);
+  label(g, `${deg.toFixed(2)}\u00b0`, x + w / 2, y + h + 24, COLORS[3], "center", 17);
+}
+
+// ---- the scope ---------------------------------------------------------------------------
+const STRIPS = [
+  { title: "position (counts)", series: [["pos", "plant", "#58a6ff"]] },
+  { title: "counter (counts)", series: [["counter", "counter", "#79c0ff"]], target: true },
+  { title: "velocity (counts/s)", series: [["vel", "actual", "#3fb950"], ["vcmd", "commanded", "#ff7b72"]] },
+  { title: "DAC code", series: [["dac", "code", "#d29922"]], steps: true },
+];
+
+function windowRows() {
+  const end = lab.frozenAt !== null ? lab.frozenAt : lab.status.time;
+  const rows = lab.traces[lab.axis].filter((r) => r[ROW.t] >= end - lab.window && r[ROW.t] <= end);
+  return { rows, end, start: end - lab.window };
+}
+
+function drawScope() {
+  const { g, w, h } = sized(document.getElementById("scope"));
+  g.clearRect(0, 0, w, h);
+  const { rows, start, end } = windowRows();
+  const left = 78, right = w - 10, stripH = (h - 26) / STRIPS.length;
+  const tx = (t) => left + (t - start) / (end - start) * (right - left);
+  STRIPS.forEach((strip, i) => {
+    const top = i * stripH + 4, bottom = top + stripH - 8;
+    const values = [];
+    for (const r of rows) for (const [key] of strip.series) values.push(r[ROW[key]]);
+    const want = strip.target ? goal(lab.axis) : null;
+    if (want !== null) values.push(want);
+    let lo = Math.min(...values), hi = Math.max(...values);
+    if (!values.length) { lo = -1; hi = 1; }
+    if (hi - lo < 4) { lo -= 2; hi += 2; }
+    const pad = (hi - lo) * 0.08; lo -= pad; hi += pad;
+    const ty = (v) => bottom - (v - lo) / (hi - lo) * (bottom - top);
+    g.fillStyle = "#0b1220"; g.fillRect(left, top, right - left, bottom - top);
+    drawTicks(g, start, end, tx, top, bottom, i === STRIPS.length - 1);
+    g.strokeStyle = "#30363d"; g.lineWidth = 1;
+    if (lo < 0 && hi > 0) { g.beginPath(); g.moveTo(left, ty(0)); g.lineTo(right, ty(0)); g.stroke(); }
+    if (want !== null) {
+      g.setLineDash([8, 6]); g.strokeStyle = "#f0883e"; g.lineWidth = 2;
+      g.beginPath(); g.moveTo(left, ty(want)); g.lineTo(right, ty(want)); g.stroke(); g.setLineDash([]);
+    }
+    for (const [key, , color] of strip.series) {
+      g.strokeStyle = color; g.lineWidth = 2; g.beginPath();
+      rows.forEach((r, k) => {
+        const X = tx(r[ROW.t]), Y = ty(r[ROW[key]]);
+        if (k === 0 || r[ROW.t] - rows[k - 1][ROW.t] > GAP_S) g.moveTo(X, Y);  // ticks not reported
+        else if (strip.steps || key === "counter") { g.lineTo(X, ty(rows[k - 1][ROW[key]])); g.lineTo(X, Y); }
+        else g.lineTo(X, Y);
+      });
+      g.stroke();
+    }
+    label(g, hi.toFixed(0), left - 6, top + 12, "#8b949e", "right", 12);
+    label(g, lo.toFixed(0), left - 6, bottom, "#8b949e", "right", 12);
+    const legend = [[`${AXES[lab.axis]} ${strip.title}`, COLORS[lab.axis], 14]].concat(
+      strip.series.concat(want !== null ? [[0, "Desire.Pos", "#f0883e"]] : [])
+        .map(([, name, color]) => [`\u2014 ${name}`, color, 13]));
+    let lx = left + 8, width = 0;
+    for (const [text, , size] of legend) {
+      g.font = `${size}px "DejaVu Sans", sans-serif`;
+      width += g.measureText(text).width + 14;
+    }
+    g.fillStyle = "rgba(11, 18, 32, 0.85)";          // the legend stays readable over the traces
+    g.fillRect(left + 2, top + 2, width + 6, 21);
+    for (const [text, color, size] of legend) {
+      label(g, text, lx, top + 17, color, "left", size);
+      lx += g.measureText(text).width + 14;
+    }
+  });
+  if (lab.frozenAt !== null) label(g, "FROZEN", right - 8, 20, "#ff5c5c", "right", 15);
+}
+
+function drawTicks(g, start, end, tx, top, bottom, withLabels) {
+  const span = end - start;
+  if (span <= 2.5) {                                // the servo's 60 Hz ticks
+    g.strokeStyle = "#1f2a3a"; g.lineWidth = 1;
+    for (let n = Math.ceil(start * 60); n <= end * 60; n++) {
+      g.beginPath(); g.moveTo(tx(n / 60), top); g.lineTo(tx(n / 60), bottom); g.stroke();
+    }
+  }
+  const step = span <= 1 ? 0.1 : span <= 3 ? 0.5 : span <= 12 ? 2 : 5;
+  g.strokeStyle = "#3b4656";
+  for (let s = Math.ceil(start / step) * step; s <= end; s += step) {
+    g.beginPath(); g.moveTo(tx(s), top); g.lineTo(tx(s), bottom); g.stroke();
+    if (withLabels) label(g, `${s.toFixed(step < 1 ? 1 : 0)} s`, tx(s), bottom + 16, "#8b949e", "center", 12);
+  }
+}
+
+function pick(selector, key, apply) {
+  document.querySelectorAll(selector).forEach((b) => b.addEventListener("click", () => {
+    apply(b.dataset[key]);
+    document.querySelectorAll(selector).forEach((o) => o.classList.toggle("on", o === b));
+  }));
+}
+pick("#axes button", "axis", (v) => { lab.axis = Number(v); });
+pick("#windows button", "window", (v) => { lab.window = Number(v); });
+document.querySelector('#axes button[data-axis="0"]').classList.add("on");
+document.querySelector('#windows button[data-window="2"]').classList.add("on");
+document.getElementById("scope").addEventListener("wheel", (e) => {
+  e.preventDefault();
+  lab.window = Math.min(KEEP_S - 5, Math.max(0.1, lab.window * (e.deltaY > 0 ? 1.25 : 0.8)));
+  lab.dirty = true;
+  document.querySelectorAll("#windows button").forEach((o) => o.classList.remove("on"));
+});
+document.getElementById("freeze").addEventListener("click", (e) => {
+  lab.frozenAt = lab.frozenAt === null ? lab.status.time : null;
+  e.target.classList.toggle("on", lab.frozenAt !== null);
+});
+
+function download(name, url) {
+  const a = document.createElement("a");
+  a.href = url; a.download = name; document.body.appendChild(a); a.click(); a.remove();
+}
+lab.csv = () => {                                    // the window, every axis, as the plant trace
+  const end = lab.frozenAt !== null ? lab.frozenAt : lab.status.time, start = end - lab.window;
+  const rows = [].concat(...lab.traces).filter((r) => r[ROW.t] >= start && r[ROW.t] <= end)
+    .sort((a, b) => a[ROW.t] - b[ROW.t] || a[ROW.axis] - b[ROW.axis]);
+  return "time_s,axis,dac,vcmd,vel,pos,counter\n" + rows.map((r) =>
+    [r[0].toFixed(9), AXES[r[1]], r[2], r[3].toFixed(3), r[4].toFixed(3), r[5].toFixed(3), r[6]].join(",")).join("\n") + "\n";
+};
+document.getElementById("csv").addEventListener("click", () =>
+  download(`scope-${lab.status.time.toFixed(3)}s.csv`, URL.createObjectURL(new Blob([lab.csv()], { type: "text/csv" }))));
+document.getElementById("png").addEventListener("click", () =>
+  download(`scope-${AXES[lab.axis]}-${lab.status.time.toFixed(3)}s.png`, document.getElementById("scope").toDataURL("image/png")));
+
+// ---- the servo's words ----------------------------------------------------------------------
+const STATES = { 0: "Stop", 1: "Move" };
+const SHORT = { "Desire.Pos": "Desire.Pos", "Command.Status": "Cmd.Status", "Delay.Left": "Delay.Left" };
+function buildTable() {
+  const head = document.querySelector("#servo thead");
+  head.innerHTML = "<tr><th>axis</th><th>counter</th>" +
+    lab.perAxis.map((n) => `<th>${SHORT[n] || n}</th>`).join("") + "</tr>";
+}
+
+function drawTable() {
+  const body = document.querySelector("#servo tbody");
+  const known = lab.perAxis.filter((n) => n in lab.servo);
+  let html = "";
+  AXES.forEach((a, i) => {
+    const row = lab.latest[i];
+    const moving = lab.servo["Command.Status"] && lab.servo["Command.Status"][i];
+    html += `<tr><td class="axis" style="color:${COLORS[i]}">${a}</td><td>${row ? row[ROW.counter] : ""}</td>` +
+      lab.perAxis.map((n) => {
+        let v = lab.servo[n] ? lab.servo[n][i] : "";
+        if (n === "State" && v in STATES) v = `${STATES[v]} ${v}`;   // block 1000's CONs
+        return `<td${moving && n === "Command.Status" ? ' class="moving"' : ""}>${v}</td>`;
+      }).join("") + "</tr>";
+  });
+  const singles = lab.single.filter((n) => n in lab.servo).map((n) => `${n} = ${lab.servo[n]}`);
+  const note = known.length
+    ? `${singles.join(", ")} \u00b7 block 1000's variables, read each 60 Hz tick`
+    : "The servo's variables appear once the blocks define them (1000 LOAD): they are found by name in the dictionary.";
+  html += `<tr class="note"><td colspan="${lab.perAxis.length + 2}">${note}</td></tr>`;
+  body.innerHTML = html;
+}
+
+// ---- the frame loop -------------------------------------------------------------------------
+// Drawn when something changed (new data comes about 30 times a second, or the
+// user changed the view): an unchanged frame is not drawn again, which halves
+// what the page costs the host.
+let lastTable = 0;
+function frame(now) {
+  if (lab.dirty) {
+    lab.dirty = false;
+    drawStatus();
+    drawRobot();
+    drawScope();
+    lab.frames = (lab.frames || 0) + 1;
+  }
+  if (now - lastTable > 100) { drawTable(); lastTable = now; }
+  requestAnimationFrame(frame);
+}
+window.addEventListener("resize", () => { fitTerminal(); lab.dirty = true; });
+document.addEventListener("click", () => { lab.dirty = true; });
+requestAnimationFrame(frame);

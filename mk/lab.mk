@@ -1,0 +1,38 @@
+# mk/lab.mk: the lab bench (python -m harness lab; docs/lab.md).
+#   make lab              boot the FORTH and serve the page on 127.0.0.1 (prints the URL)
+#   make lab SPEED=full   start at full speed (real, x10, full); PORT=n another port
+#   make lab-assets       the page's libraries: xterm.js, pinned by harness/lab's
+#                         package-lock.json, installed by npm ci into build/lab
+#   make lab-browser      Debian's chromium and chromium-driver, for the browser tests
+#   make test-lab-long    the longer browser session (not part of make test)
+#   make bench-lab        the lab's cost: CPU at real pace, instruction rate at full speed
+LAB_DIR   := $(BUILD)/lab
+LAB_STAMP := $(LAB_DIR)/node_modules/.stamp
+LAB_NEEDS := $(BUILD)/pdp11 $(BUILD)/kernel.lda $(BUILD)/kernel.map $(LAB_STAMP) venv
+
+$(LAB_STAMP): harness/lab/package.json harness/lab/package-lock.json
+	@command -v npm >/dev/null || bash mk/apt-need.sh nodejs npm
+	@echo "==> installing the lab page's libraries (npm ci, pinned: harness/lab/package-lock.json)"
+	@mkdir -p $(LAB_DIR)
+	@cp harness/lab/package.json harness/lab/package-lock.json $(LAB_DIR)/
+	@cd $(LAB_DIR) && npm ci --no-audit --no-fund --loglevel=error
+	@touch $@
+
+lab-assets: $(LAB_STAMP)
+ALL_PRODUCTS += $(LAB_STAMP)
+
+lab: $(LAB_NEEDS) $(WORK_DSK)
+	@$(PY) -m harness lab $(if $(PORT),--port $(PORT)) $(if $(SPEED),--speed $(SPEED))
+
+# The browser tests skip, saying why, only where these cannot be installed.
+lab-browser:
+	@bash mk/apt-need.sh chromium chromium-driver || echo "==> chromium could not be installed: the browser tests will skip"
+test: lab-browser
+
+test-lab-long: $(LAB_NEEDS) $(PRISTINE_DSK) lab-browser
+	@LAB_LONG=1 $(PY) -m pytest -q tests/lab/test_long_session.py
+
+bench-lab: $(LAB_NEEDS) $(PRISTINE_DSK) lab-browser
+	@$(PY) -m harness.lab.bench
+BENCHES += bench-lab
+.PHONY: lab lab-assets lab-browser test-lab-long bench-lab

@@ -1,0 +1,37 @@
+"""python -m harness lab from the shell: bad input is one clear line and exit 1; a
+simulator that dies under the lab ends it, saying so."""
+import os
+import shutil
+import signal
+import socket
+from harness.cli import main
+from harness.lab.launch import ROOT, LabProcess
+
+
+def lab(capsys, *args):
+    """The lab command in this process: its exit status and what it wrote to stderr."""
+    status = main(["lab", *args])
+    return status, capsys.readouterr().err
+
+
+def test_a_missing_disk_is_one_clear_line(tmp_path, capsys):
+    status, err = lab(capsys, "--disk", str(tmp_path / "none.dsk"))
+    assert status == 1 and "no such disk image" in err
+
+
+def test_a_busy_port_is_one_clear_line(tmp_path, capsys):
+    disk = tmp_path / "robot.dsk"
+    shutil.copyfile(ROOT / "build" / "robot.dsk", disk)
+    with socket.socket() as taken:
+        taken.bind(("127.0.0.1", 0))
+        taken.listen()
+        port = taken.getsockname()[1]
+        status, err = lab(capsys, "--port", str(port), "--disk", str(disk))
+    assert status == 1 and f"cannot serve on 127.0.0.1:{port}" in err
+
+
+def test_a_simulator_that_dies_ends_the_lab(tmp_path):
+    server = LabProcess(tmp_path)
+    os.kill(server.simulator_pid(), signal.SIGKILL)
+    assert server.proc.wait(timeout=30) == 1
+    assert "the simulator exited on its own" in server.text()

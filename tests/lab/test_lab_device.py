@@ -1,0 +1,111 @@
+"""The LAB device (pdp11-devices/lab.c) in build/pdp11: its rows, its commands,
+and that pacing, pausing and stepping leave the machine's run unchanged."""
+import os
+import shutil
+import threading
+import time
+
+import pytest
+
+from harness import simh
+from harness.console_session import KERNEL
+
+PRISTINE = simh.ROOT / "build" / "robot.dsk"
+TYPED = "1000 LOAD\rSet.Up.Robot\r800 800 400 0 Abs.Move\r"
+RUN_INSTRUCTIONS = 4_500_000          # 15 simulated seconds: the load, the set-up, the move
+
+
+def rows(path, kind):
+    text = path.read_text() if path.exists() else ""
+    return [line.split(",")[1:] for line in text.splitlines() if line.startswith(kind + ",")]
+
+
+@pytest.fixture
+def ctl(tmp_path):
+    """The command FIFO, held open read-write by the test (as the lab server does)."""
+    fifo = tmp_path / "lab.ctl"
+    os.mkfifo(fifo)
+    fd = os.open(fifo, os.O_RDWR | os.O_NONBLOCK)
+    yield lambda text: os.write(fd, text.encode())
+    os.close(fd)
+
+
+def test_rows_and_commands(tmp_path, ctl):
+    out = tmp_path / "lab"
+    ctl("watch 140000 140002\ndump 140000 2\nspeed abc\nwatch 140001\nfly\n")
+    out_text = simh.run(f"load {KERNEL}\n" + simh.deposit(0o140000, [0o1234, 0o177777]) +
+                        f"attach lab {out}\nset lab speed=10\nstep 21000\nshow lab\n"
+                        "detach lab\n")
+    assert "LAB, running, speed=10x, 2 words watched: 140000=001234 140002=177777" in out_text
+    text = out.read_text()
+    assert text.startswith("A\nS,0.000000,run,0\n")       # at the attach, before SET
+    assert rows(out, "A") == [["140000", "140002"]]
+    assert rows(out, "M") == [["140000", str(0o1234), "65535"]]
+    assert [e[0] for e in rows(out, "E")] == [
+        "speed takes a number from 0 (full speed) to 1000 (times the 11/23's pace)",
+        "watch takes even octal addresses below 160000",
+        "commands: speed X", ]
+    samples = rows(out, "W")
+    assert [s[1] for s in samples] == ["1", "2", "3", "4"]         # every 5000 instructions
+    assert samples[0][0] == "0.016667" and samples[-1][0] == "0.066667"
+    assert samples[-1][2:] == [str(0o1234), "65535"]
+    plant = rows(out, "P")                       # four samples a tick, every axis
+    assert [p[1] for p in plant[:8]] == list("XYZTXYZT")
+    assert [p[0] for p in plant[::4][:5]] == ["0.004167", "0.008333", "0.012500",
+                                              "0.016667", "0.020833"]
+    x = plant[0][2:]                             # DAC at zero volts; x drifts on its offset
+    assert x[:2] == ["2048", "-58.590"] and float(x[2]) < 0 and x[4] == "0"
+
+
+def test_set_lab_speed_refuses_bad_values_and_keeps_the_old_one(tmp_path):
+    out = simh.run("set lab speed=10\nset lab speed=-1\nset lab speed=fast\nshow lab\n")
+    assert out.count("LAB: speed takes a number") == 2
+    assert "running, speed=10x" in out
+
+
+def run_servo(tmp_path, name, lab=None, ctl_commands=None):
+    disk = tmp_path / f"{name}.dsk"
+    shutil.copyfile(PRISTINE, disk)
+    trace = tmp_path / f"{name}.csv"
+    script = (f"attach rl0 {disk}\nattach plant {trace}\n"
+              + (f"attach lab {lab}\n" if lab else "")
+              + f"load {KERNEL}\nstep {RUN_INSTRUCTIONS}\ndetach plant\n")
+    if ctl_commands:
+        threading.Thread(target=ctl_commands, daemon=True).start()
+    out = simh.run(script, keyboard=TYPED, timeout=120)
+    return trace.read_bytes(), out
+
+
+def test_pacing_pausing_and_stepping_change_nothing_the_machine_does(tmp_path, ctl):
+    plain, plain_out = run_servo(tmp_path, "plain")
+    assert b",X," in plain and "800 800 400 0 Abs.Move  ok" in plain_out
+
+    lab = tmp_path / "lab"
+
+    def paused_at():
+        return sorted({float(s[0]) for s in rows(lab, "S") if s[1] == "pause"})
+
+    def user():                        # pause early, step three ticks, go on
+        for n, command in enumerate(("step", "step", "step", "run"), start=1):
+            deadline = time.monotonic() + 30
+            while len(paused_at()) < n and time.monotonic() < deadline:
+                time.sleep(0.02)       # each step once the last one has paused
+            ctl(command + "\n")
+    ctl("speed 100\npause\n")
+    watched, watched_out = run_servo(tmp_path, "watched", lab, user)
+    assert watched == plain
+    assert watched_out.replace(str(tmp_path / "watched"), "") == plain_out.replace(
+        str(tmp_path / "plain"), "")
+    states, pauses = rows(lab, "S"), paused_at()
+    assert [round((b - a) * 60, 3) for a, b in zip(pauses, pauses[1:])] == [1, 1, 1]
+    assert states[-1][1] == "run" and float(states[-1][0]) == pauses[-1]
+
+
+def test_ticks_keep_their_simulated_times_when_rate_changes(tmp_path):
+    """SET CLK RATE (time_base.c): the LAB device's pending tick is rescaled too."""
+    out = tmp_path / "lab"
+    simh.run(f"load {KERNEL}\nattach lab {out}\nset lab speed=10\nstep 21000\n"
+             "set clk rate=600000\nstep 40000\ndetach lab\n")
+    times = [s[0] for s in rows(out, "W")]
+    assert times == ["0.016667", "0.033333", "0.050000", "0.066667",
+                     "0.083333", "0.100000", "0.116667", "0.133333"]

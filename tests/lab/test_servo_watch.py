@@ -1,0 +1,92 @@
+"""Finding the servo's words by name in a copy of memory (harness/lab/dictionary.py,
+servo_watch.py), on headers laid out as forth/README.md describes them."""
+from harness.lab.dictionary import Memory, find_bodies
+from harness.lab.servo_watch import ORIGIN, ServoWatch, signed
+
+VOCABULARY = 0o20470
+
+
+class Dictionary:
+    """Builds headers into a Memory the way the kernel's HEADER, does."""
+
+    def __init__(self, start=0o50000):
+        self.memory = Memory()
+        self.here = start
+        self.heads = [0, 0, 0, 0]
+
+    def byte(self, address, value):
+        word = self.memory.word(address) or 0
+        shift = 8 * (address & 1)
+        self.memory.store(address & ~1, [(word & ~(0o377 << shift)) | (value << shift)])
+
+    def header(self, name, flags=0, body_words=4):
+        chain = len(name) % 4
+        lfa = self.here
+        self.memory.store(lfa, [self.heads[chain]])
+        self.byte(lfa + 2, len(name) | flags)
+        for i, c in enumerate(name.encode()):
+            self.byte(lfa + 3 + i, c)
+        cfa = (lfa + 3 + len(name) + 1) & ~1
+        self.memory.store(cfa, [0o4737, 0o2026] + [0] * body_words)
+        self.heads[chain] = lfa
+        self.here = cfa + 4 + 2 * body_words
+        self.memory.store(VOCABULARY, self.heads)
+        return cfa + 4
+
+
+def test_find_bodies_newest_first_case_ignored_smudged_skipped():
+    d = Dictionary()
+    old = d.header("Velocity")
+    new = d.header("VELOCITY")
+    d.header("State", flags=0o40)                         # smudged: being defined
+    state = d.header("Dir")
+    assert find_bodies(d.memory, VOCABULARY, ["Velocity", "State", "Dir", "Missing"]) == {
+        "Velocity": new, "Dir": state}
+    assert old != new
+
+
+def test_a_broken_chain_ends_the_walk():
+    d = Dictionary()
+    d.header("Dir")
+    d.memory.store(VOCABULARY + 2 * 3, [0o77776])          # into memory never dumped
+    assert find_bodies(d.memory, VOCABULARY, ["Dir"]) == {}
+
+
+def symbols():
+    return {"FORTH": VOCABULARY - 4, "DP": 0o6340, "FENCE": 0o6456}
+
+
+def test_servo_watch_dumps_the_dictionary_when_it_changes_and_watches_by_name():
+    d = Dictionary()
+    kernel_state = d.header("STATE", body_words=1)         # the kernel's: below FENCE
+    fence = d.here
+    desire = d.header("Desire.Pos")
+    d.header("State")
+    direction = d.header("Dir", body_words=1)
+    watch = ServoWatch(symbols())
+    assert watch.probe() == ["dump 20470 4", "dump 6462 1", "dump 6344 1"]
+    assert watch.on_memory(VOCABULARY, d.heads) == []
+    assert watch.on_memory(0o6462, [fence]) == []
+    command = watch.on_memory(0o6344, [d.here])
+    assert command == [f"dump {ORIGIN:o} {(d.here - ORIGIN) // 2}"]
+    d.memory.store(0o6344, [d.here])                       # the kernel's DP and FENCE, dumped too
+    d.memory.store(0o6462, [fence])
+    words = [d.memory.word(a) or 0 for a in range(ORIGIN, d.here, 2)]
+    assert watch.on_memory(ORIGIN, words[:64]) == []       # the dump comes in rows
+    watch_command = watch.on_memory(ORIGIN + 128, words[64:])
+    state_body = watch.found["State"]
+    assert state_body != kernel_state
+    expected = [desire + 2 * i for i in range(4)] + [state_body + 2 * i for i in range(4)] + [
+        direction]
+    assert watch_command == ["watch " + " ".join(f"{a:o}" for a in expected)]
+    # W rows are read with the new layout once the device confirms the addresses
+    assert watch.values([1] * 9) == {}
+    watch.on_addresses(expected)
+    assert watch.values([800, 800, 400, 0, 1, 1, 0, 0, 0o177777]) == {
+        "Desire.Pos": [800, 800, 400, 0], "State": [1, 1, 0, 0], "Dir": -1}
+    # nothing changed: the next probe dumps nothing
+    assert watch.on_memory(0o6344, [d.here]) == []
+
+
+def test_signed():
+    assert signed(0o177777) == -1 and signed(0o77777) == 32767 and signed(0) == 0
