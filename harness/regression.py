@@ -9,6 +9,7 @@ and, in the script's comments, "# needs: 1000 LOAD" (skipped while the appendix
 blocks cannot load on this kernel) and "# fails-at: N" (the run must stop with
 exit status 1 at script line N, naming it, and run nothing after it).
 """
+import argparse
 import contextlib
 import difflib
 import functools
@@ -18,7 +19,9 @@ import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
-from harness import cli, trace_features
+from harness import trace_features
+from harness.commands import run as run_command
+from harness.commands.invoke import PROG, run_reported
 from harness.trace import read as read_trace
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -73,12 +76,15 @@ def scenarios(names=()):
 
 
 def run(scenario, out_dir):
-    """Run the scenario through the `run` command; its outcome."""
+    """Run the scenario through the `run` command, as `python -m harness run
+    SCRIPT --out DIR OPTIONS` would in process; its outcome."""
     out_dir = Path(out_dir)
+    parser = argparse.ArgumentParser(prog=f"{PROG} run")
+    run_command.configure(parser)
+    args = parser.parse_args([str(scenario.path), "--out", str(out_dir), *scenario.options])
     stdout, stderr = io.StringIO(), io.StringIO()
     with contextlib.redirect_stdout(stdout), contextlib.redirect_stderr(stderr):
-        status = cli.main(["run", str(scenario.path), "--out", str(out_dir),
-                           *scenario.options])
+        status = run_reported(args, run_command.ERRORS, "run")
     transcript = out_dir / f"{scenario.name}.transcript"
     trace = out_dir / f"{scenario.name}.trace.csv"
     if not transcript.exists():
