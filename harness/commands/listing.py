@@ -5,8 +5,8 @@ import sys
 import tempfile
 from pathlib import Path
 
-from harness import simh
-from harness.listing import PRISTINE, ListingError, format_ranges, listable_blocks, make_listing
+from harness.machine import simh
+from harness.analysis.listing import PRISTINE, ListingError, format_ranges, listable_blocks, make_listing
 
 ERRORS = (ListingError, simh.SimhError)
 

@@ -5,8 +5,8 @@ import xml.etree.ElementTree as ET
 import numpy as np
 import pytest
 
-from harness import moves as mv
-from harness import plots, trace
+from harness.analysis import moves as mv
+from harness.analysis import plots, trace
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 
