@@ -13,7 +13,7 @@ from pathlib import Path
 
 from harness.analysis import timing
 from harness.machine.robot import RATE
-from harness.bench.robot_bench import setup_script
+from harness.analysis.servo_timing import setup_script
 
 ROOT = Path(__file__).resolve().parents[2]
 DISK = ROOT / "build" / "robot.dsk"
