@@ -12,8 +12,8 @@ import tempfile
 from pathlib import Path
 
 from harness.analysis import timing
-from harness.machine.robot import RATE
 from harness.analysis.servo_timing import setup_script
+from harness.machine.robot import RATE
 
 ROOT = Path(__file__).resolve().parents[2]
 DISK = ROOT / "build" / "robot.dsk"
