@@ -20,8 +20,8 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
 
-from harness.machine import simh                                  # noqa: E402
 from harness.analysis.pdp11prog import Program, check_listing      # noqa: E402
+from harness.machine import simh                                  # noqa: E402
 
 RATE = 300000
 STEPS = 100_000_000                                       # 333 simulated seconds

@@ -11,8 +11,8 @@ Move.Complete?), circle.csv (16 via points, radius 2 inches, 2400 counts/s),
 the square and circle again with blends of BLEND_SLOW ticks (-slow.csv) and
 by Spline.Run (-spline.csv), and,
 for the printed servo, pick.csv (block 1062's pick and place); prints the
-measurements the docs quote (harness/analysis/path_metrics.py). With --figures, draws the docs' figures from
-those traces into DIR (continuation-SERVO-NAME-xy.png, continuation-pick-gripper.png).
+measurements the docs quote (harness/analysis/path_metrics.py). With --figures,
+draws the docs' figures from those traces into DIR (continuation-SERVO-NAME-xy.png, continuation-pick-gripper.png).
 """
 import argparse
 import math

@@ -21,9 +21,9 @@ import tempfile
 import time
 from pathlib import Path
 
+from harness.lab.launch import ROOT, LabProcess, have_browser, headless_browser
 from harness.machine import simh
 from harness.machine.console_session import KERNEL
-from harness.lab.launch import ROOT, LabProcess, have_browser, headless_browser
 
 RATE = 300_000
 WINDOW_S = 10.0

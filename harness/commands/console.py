@@ -3,9 +3,9 @@ import argparse
 import shutil
 from pathlib import Path
 
+from harness.blocks.disk import DiskError, check_image
 from harness.commands.argtypes import positive
 from harness.machine.console_session import BUSY_WAIT, HINT, RACK_HINT, session
-from harness.blocks.disk import DiskError, check_image
 from harness.machine.simh import PDP11
 
 ROOT = Path(__file__).resolve().parents[2]

@@ -4,8 +4,8 @@ import argparse
 import asyncio
 from pathlib import Path
 
-from harness.commands.console import ConsoleError, working_disk
 from harness.blocks.disk import DiskError
+from harness.commands.console import ConsoleError, working_disk
 from harness.lab.server import NODE_MODULES, serve
 from harness.machine.scripted_machine import KERNEL_MAP, read_kernel_map
 from harness.machine.simh import PDP11

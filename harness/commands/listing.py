@@ -5,8 +5,9 @@ import sys
 import tempfile
 from pathlib import Path
 
+from harness.analysis.listing import (PRISTINE, ListingError, format_ranges, listable_blocks,
+                                      make_listing)
 from harness.machine import simh
-from harness.analysis.listing import PRISTINE, ListingError, format_ranges, listable_blocks, make_listing
 
 ERRORS = (ListingError, simh.SimhError)
 

@@ -3,9 +3,9 @@ import argparse
 from pathlib import Path
 
 from harness.analysis import moves as mv
-from harness.commands.argtypes import positive
 from harness.analysis.plot_errors import PlotError
 from harness.analysis.trace import AXES, TraceError, read
+from harness.commands.argtypes import positive
 
 ERRORS = (TraceError, PlotError)
 FIGURES = ("moves", "time", "zero")              # what "all" draws

@@ -20,9 +20,9 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from harness.analysis import trace_features
+from harness.analysis.trace import read as read_trace
 from harness.commands import run as run_command
 from harness.commands.invoke import PROG, run_reported
-from harness.analysis.trace import read as read_trace
 
 ROOT = Path(__file__).resolve().parents[2]
 SCENARIOS = ROOT / "tests" / "regression" / "scenarios"

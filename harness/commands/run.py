@@ -5,9 +5,9 @@ import sys
 import tempfile
 from pathlib import Path
 
-from harness.machine import script
-from harness.commands.argtypes import positive
 from harness.blocks.disk import DiskError, check_image, write_atomic
+from harness.commands.argtypes import positive
+from harness.machine import script
 from harness.machine.script_run import run_steps
 from harness.machine.scripted_machine import KERNEL, ScriptError, ScriptedMachine
 from harness.machine.simh import PDP11, SimhError

@@ -5,10 +5,10 @@ import sys
 import tempfile
 from pathlib import Path
 
+from harness.analysis.tick_view import SETUP, WATCH, open_view
 from harness.commands.argtypes import count
 from harness.machine.machine import ForthError, MachineHalted
 from harness.machine.scripted_machine import ScriptError
-from harness.analysis.tick_view import SETUP, WATCH, open_view
 
 ERRORS = (ForthError, MachineHalted, ScriptError, RuntimeError)
 PRISTINE = Path(__file__).resolve().parents[2] / "build" / "robot.dsk"

@@ -3,9 +3,9 @@ import argparse
 from pathlib import Path
 
 from harness.analysis import servo_timing
-from harness.machine import simh
-from harness.commands.argtypes import count
 from harness.analysis.timing import CHUNK, TimingError, measure
+from harness.commands.argtypes import count
+from harness.machine import simh
 
 ERRORS = (TimingError, simh.SimhError)
 

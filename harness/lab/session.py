@@ -15,10 +15,10 @@ from pathlib import Path
 
 import pexpect
 
+from harness.lab.feed import Lines, lab_row
 from harness.machine import simh
 from harness.machine.console_session import KERNEL, leave, say
 from harness.machine.console_watch import Leave, LineWatcher
-from harness.lab.feed import Lines, lab_row
 from harness.machine.simh import MACHINE_INI, ROOT
 
 SPEEDS = {"real": 1, "x10": 10, "full": 0}

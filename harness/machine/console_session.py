@@ -19,10 +19,10 @@ from pathlib import Path
 
 import pexpect
 
+from harness.blocks.disk import block_ranges
 from harness.machine import block_buffers, pty_child
 from harness.machine.console_halt import HaltWatcher, kernel_entry
 from harness.machine.console_watch import Leave, LineWatcher
-from harness.blocks.disk import block_ranges
 from harness.machine.scripted_machine import ScriptError, read_kernel_map
 from harness.machine.simh import MACHINE_INI
 

@@ -18,8 +18,8 @@ from pathlib import Path
 
 import pexpect
 
-from harness.machine import pty_child
 from harness.blocks.disk import RL02_BYTES
+from harness.machine import pty_child
 
 ROOT = Path(__file__).resolve().parents[2]
 SIMULATOR = ROOT / os.environ.get("PDP11_SIM", "build/pdp11")

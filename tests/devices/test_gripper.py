@@ -5,8 +5,8 @@ import csv
 import subprocess
 from pathlib import Path
 
-from harness.machine import simh
 from harness.analysis.pdp11prog import examine_results, results
+from harness.machine import simh
 from harness.machine.robot import parse_show_gripper
 import programs
 

@@ -7,8 +7,8 @@ import sys
 import pytest
 
 from harness import cli
-from harness.commands import regress
 from harness.blocks.disk import RL02_BYTES, DiskError, check_image
+from harness.commands import regress
 
 from tests.run.common import ROOT, needs_build
 

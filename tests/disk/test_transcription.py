@@ -6,9 +6,9 @@ from pathlib import Path
 
 import pytest
 
+from harness.analysis.forthscan import check_load, words
 from harness.blocks.blockfile import fused_line_ends, problems_in_text, split_lines, text_to_block
 from harness.blocks.disk import block_ranges
-from harness.analysis.forthscan import check_load, words
 
 ROOT = Path(__file__).resolve().parents[2]
 BLOCKS = ROOT / "blocks"
