@@ -11,6 +11,7 @@ harness/analysis/moves.py and docs/plots.md.
 """
 import os
 import tempfile
+import textwrap
 from pathlib import Path
 
 import matplotlib
@@ -23,6 +24,7 @@ from harness.analysis.plot_errors import PlotError  # noqa: E402,F401  (raised h
 from harness.analysis.trace import DAC_ZERO  # noqa: E402
 
 WIDTH = 6.4                       # inches per panel
+TITLE_CHARS = 64                  # characters of a title line per panel
 STYLE = {"commanded": dict(color="tab:blue", lw=1.4, drawstyle="steps-post"),
          "actual": dict(color="tab:orange", lw=1.4),
          "held": dict(color="tab:green", lw=0, marker=".", ms=3),
@@ -103,12 +105,13 @@ def moves_figure(trace, axis, windows=(), v_idle=mv.V_IDLE, min_travel=mv.MIN_TR
     panels = fig.subplots(1, len(chosen), squeeze=False)[0]
     for ax, (move, label) in zip(panels, chosen):
         _move_panel(ax, series, move, label, kv)
-    note = ""
+    lines = [f"Axis {series.axis}: velocity against position "
+             f"(the paper's Figure 2), {Path(trace.name).name}"]
     if not windows and len(chosen) == 1:
-        note = (f"\nno short move: every move here peaks at the long move's "
-                f"{chosen[0][0].peak_code} codes above 0-Vel (MaxVel)")
-    fig.suptitle(f"Axis {series.axis}: velocity against position "
-                 f"(the paper's Figure 2), {Path(trace.name).name}{note}")
+        lines.append(f"no short move: every move here peaks at the long move's "
+                     f"{chosen[0][0].peak_code} codes above 0-Vel (MaxVel)")
+    width = TITLE_CHARS * len(chosen)          # a title fits its panels, wrapped
+    fig.suptitle("\n".join(textwrap.fill(line, width) for line in lines))
     return fig
 
 

@@ -36,8 +36,9 @@ def configure(parser):
 
 def announce(url):
     print(f"[lab] the lab bench is at {url}", flush=True)
-    print("[lab] open it in a browser on this machine; leave with BYE in the page "
-          "(or ^C here)", flush=True)
+    print("[lab] open it in a browser on this machine; type in the page or, on a "
+          "terminal, here too; leave with BYE or ^D (^C here when no terminal types)",
+          flush=True)
 
 
 def run(args):

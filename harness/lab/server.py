@@ -13,7 +13,7 @@ from pathlib import Path
 
 from aiohttp import WSMsgType, web
 
-from harness.lab import guard
+from harness.lab import guard, shell_terminal
 from harness.lab.feed import plant_row, thin, words_of
 from harness.lab.servo_watch import PER_AXIS, SINGLE, ServoWatch
 from harness.lab.session import SPEEDS, Simulator
@@ -37,7 +37,8 @@ class Lab:
 
     def __init__(self, simulator, disk, symbols, speed="real"):
         self.sim = Simulator(simulator, disk, self.on_console, self.on_lab, self.on_ended,
-                             speed)
+                             speed, page=self.to_pages)
+        self.shell_echo = None           # the shell's terminal, when it types too
         self.watch = ServoWatch(symbols)
         self.pages = set()
         self.scrollback = bytearray()
@@ -49,6 +50,11 @@ class Lab:
 
     # ---- from the simulator ---------------------------------------------------------
     def on_console(self, data):
+        if self.shell_echo:
+            self.shell_echo(data)
+        self.to_pages(data)
+
+    def to_pages(self, data):
         self.scrollback += data
         del self.scrollback[:-SCROLLBACK]
         self.broadcast({"t": "con", "d": data.decode("latin-1")})
@@ -186,6 +192,9 @@ async def serve(simulator, disk, symbols, port, speed, announce):
     lab.sim.start()
     announce(f"http://127.0.0.1:{port_of()}/?token={token}")
     loop = asyncio.get_running_loop()
+    shell = shell_terminal.attach(loop, lab.sim.keys)
+    if shell:
+        lab.shell_echo = shell[0]
     tasks = [asyncio.ensure_future(lab.frames()), asyncio.ensure_future(lab.probes())]
     try:
         loop.add_signal_handler(signal.SIGINT, lambda: asyncio.ensure_future(lab.sim.close()))
@@ -198,4 +207,6 @@ async def serve(simulator, disk, symbols, port, speed, announce):
         for ws in list(lab.pages):                # else cleanup waits for the pages to go
             await ws.close()
         await runner.cleanup()
+        if shell:
+            shell[1]()
     return lab.safe

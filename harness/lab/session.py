@@ -51,8 +51,9 @@ class Simulator:
     """One lab machine. Callbacks (called on the loop): console(bytes),
     lab(LabRow), ended(safe: bool, or None when the simulator exited by itself)."""
 
-    def __init__(self, simulator, disk, console, lab, ended, speed="real"):
+    def __init__(self, simulator, disk, console, lab, ended, speed="real", page=None):
         self.callbacks = console, lab, ended
+        self.page = page or console               # the leaving report: the page's copy
         self.simulator, self.disk, self.speed = simulator, disk, speed
         self.tmp = tempfile.TemporaryDirectory(prefix="lab-")
         self.watcher = LineWatcher()
@@ -151,9 +152,10 @@ class Simulator:
         self.leaving = True
         self.command("run")
         self._unwatch("pty")
-        echo = _Echo(asyncio.get_running_loop(), self.callbacks[0])
+        loop = asyncio.get_running_loop()
+        echo, page = _Echo(loop, self.callbacks[0]), _Echo(loop, self.page)
         try:
-            safe = await asyncio.to_thread(self._leave, how, echo)
+            safe = await asyncio.to_thread(self._leave, how, echo, page)
         finally:
             self._release()
         self.callbacks[2](safe)
@@ -165,7 +167,7 @@ class Simulator:
         self.child.close(force=True)
         self.tmp.cleanup()
 
-    def _leave(self, how, echo):
+    def _leave(self, how, echo, page):
         if not self.child.isalive():
             return None
         if how != "BYE":
@@ -173,7 +175,7 @@ class Simulator:
         gone = leave(self.child, self.disk, None, devices=("lab",), echo=echo)
         report = gone.report() + ["Bye."]
         say(*report)
-        echo.write("".join(f"\r\n[lab] {line}" for line in report).encode() + b"\r\n")
+        page.write("".join(f"\r\n[lab] {line}" for line in report).encode() + b"\r\n")
         return gone.safe
 
 

@@ -124,10 +124,15 @@ def bye_halt(kernel=KERNEL):
 def _to_forth_prompt(child, gone, busy_wait):
     """Bring the FORTH to its prompt; 0 at the prompt, 2 no answer, 3 exited."""
     child.send(CTRL_U + b"\r")                   # an empty line: who answers?
-    i = child.expect([b" ok\r\n", b"sim> ", pexpect.TIMEOUT, pexpect.EOF],
-                     timeout=busy_wait)
+    i = child.expect([b" ok\r\n", b"sim> ", pexpect.TIMEOUT, pexpect.EOF,
+                      b" compiled\r\n"], timeout=busy_wait)
     if i == 1:                                   # SIMH had the machine stopped
         child.send(b"cont\r")
+        return probe_prompt(child)
+    if i == 4:                                   # FLUSH typed now would be compiled
+        gone.notes.append("A definition was still open: ^C discarded it so that "
+                          "FLUSH could run.")
+        child.send(CTRL_C)
         return probe_prompt(child)
     if i == 2:                                   # a word is running: stop it as a user would
         gone.notes.append(f"The FORTH was busy for {busy_wait:g} s: ^C stopped the "

@@ -35,3 +35,23 @@ def test_a_simulator_that_dies_ends_the_lab(tmp_path):
     os.kill(server.simulator_pid(), signal.SIGKILL)
     assert server.proc.wait(timeout=30) == 1
     assert "the simulator exited on its own" in server.text()
+
+
+def test_the_shell_that_runs_the_lab_is_a_console_too(tmp_path):
+    """On a terminal, the lab's shell types to the same FORTH as the page and shows
+    what it prints; BYE typed there leaves as in make run (FLUSH, detach, exit 0)."""
+    import sys
+    import pexpect
+    disk = tmp_path / "robot.dsk"
+    shutil.copyfile(ROOT / "build" / "robot.dsk", disk)
+    child = pexpect.spawn(sys.executable, ["-m", "harness", "lab", "--port", "0",
+                                           "--speed", "full", "--disk", str(disk)],
+                          cwd=str(ROOT), timeout=30, encoding="latin-1")
+    child.expect(r"blocks 0-\d+\.\r+\n ok")
+    child.send("2 3 + .\r")
+    child.expect(r"2 3 \+ \. 5  ok")
+    child.send("BYE\r")
+    child.expect("FLUSH answered ok")
+    child.expect(pexpect.EOF)
+    child.close()
+    assert child.exitstatus == 0

@@ -121,6 +121,21 @@ def test_bye_while_a_word_runs_stops_it_with_ctrl_c_and_flushes(tmp_path):
     expect_left_safely(child, disk, b"written while busy")
 
 
+def test_bye_inside_an_open_definition_discards_it_and_flushes(tmp_path):
+    """BYE typed while a definition is open would be compiled, and so would FLUSH:
+    the console sees the ` compiled` prompt and stops the definition first."""
+    disk = tmp_path / "work.dsk"
+    shutil.copyfile(PRISTINE, disk)
+    child = console(disk)
+    write_block_word(child, "kept though a definition was open")
+    child.send(": HALF-DONE 1 2\r")
+    child.expect(r" compiled\r\n")
+    child.send("BYE\r")
+    child.expect_exact("A definition was still open: ^C discarded it so that FLUSH "
+                       "could run.")
+    expect_left_safely(child, disk, b"kept though a definition was open")
+
+
 def test_a_flush_that_fails_names_the_blocks_not_written(tmp_path):
     """An fsync that fails (LD_PRELOAD) makes the write a drive error (rl_durable.c)."""
     lib = failing_fsync_library(tmp_path)
