@@ -4,11 +4,11 @@
 #   make servo-runs    the traces behind docs/servo.md, in build/servo/ (printed
 #                      blocks, and with the proposed block 1030)
 bench-robot: $(BUILD)/kernel.lda $(BUILD)/pdp11 $(BUILD)/robot.dsk venv
-	@$(PY) -m harness.robot_bench
+	@$(PY) -m harness.bench.robot_bench
 
 servo-runs: $(BUILD)/kernel.lda $(BUILD)/pdp11 $(BUILD)/robot.dsk venv
-	@$(PY) -m harness.servo_runs $(BUILD)/servo/printed
-	@$(PY) -m harness.servo_runs $(BUILD)/servo/ramp --block 1030 --then Ramp.Servo
+	@$(PY) -m harness.bench.servo_runs $(BUILD)/servo/printed
+	@$(PY) -m harness.bench.servo_runs $(BUILD)/servo/ramp --block 1030 --then Ramp.Servo
 
 BENCHES += bench-robot
 .PHONY: bench-robot servo-runs

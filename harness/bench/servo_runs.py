@@ -1,0 +1,72 @@
+"""The runs behind docs/servo.md: plant traces of the 1983 servo as printed
+(and of the proposed block 1030), made in lock-step with simulated time
+(harness/machine/robot.py), so that the same command gives the same traces.
+
+    python -m harness.bench.servo_runs OUTDIR [--block 1030 [--then Ramp.Servo]]
+
+writes OUTDIR/moves.csv (a long and two short moves on x), OUTDIR/rest.csv (a
+move, then a simulated minute at rest) and prints what each line answered and
+the plant's state (SHOW PLANT) at the points the docs quote.
+"""
+import argparse
+import shutil
+import sys
+import tempfile
+from pathlib import Path
+
+from harness.machine.robot import Robot
+
+ROOT = Path(__file__).resolve().parents[2]
+DISK = ROOT / "build" / "robot.dsk"
+# x: 4000 counts (5 in) out, then 150 and 40 counts: one long move, two short
+MOVES = [(4000, 2.0), (4150, 2.0), (4190, 2.0)]
+
+
+def session(trace, block, then, disk_dir):
+    disk = Path(disk_dir) / f"{trace.stem}.dsk"
+    shutil.copy(DISK, disk)
+    r = Robot(disk=disk, trace=trace, sample=1000)
+    r.send("1000 LOAD")
+    if block:
+        r.send(f"{block} LOAD")
+    r.send("Set.Up.Robot")
+    if then:
+        r.send(then)
+    return r
+
+
+def report(r, label):
+    p = r.plant()
+    cells = "  ".join(f"{a}: counter {v['counter']:6d} dac {v['dac']} offset {v['offset']:+.2f}"
+                      for a, v in p.items())
+    print(f"t={r.time():8.3f} s  {label}\n    {cells}")
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("outdir", type=Path)
+    ap.add_argument("--block", type=int, help="a block to LOAD after 1000 (e.g. 1030)")
+    ap.add_argument("--then", default="", help="a line after Set.Up.Robot (e.g. Ramp.Servo)")
+    a = ap.parse_args(argv)
+    a.outdir.mkdir(parents=True, exist_ok=True)
+    with tempfile.TemporaryDirectory() as tmp:
+        with session(a.outdir / "moves.csv", a.block, a.then, tmp) as r:
+            report(r, "after Set.Up.Robot")
+            for x, settle in MOVES:
+                start = r.time()
+                r.send(f"{x} 0 0 0 Abs.Move Move.Complete?")
+                report(r, f"{x} 0 0 0 Abs.Move Move.Complete? returned after "
+                          f"{r.time() - start:.3f} s")
+                r.idle(settle)
+                report(r, f"  {settle} s later")
+        with session(a.outdir / "rest.csv", a.block, a.then, tmp) as r:
+            r.send(": A. ( a -- ) 4 0 DO DUP I 2* + @ . LOOP DROP ;")
+            r.send("1600 800 400 0 Abs.Move Move.Complete?")
+            for k in range(7):
+                report(r, "0-Vel: " + r.send("0-Vel A."))
+                r.idle(10.0)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
