@@ -4,39 +4,26 @@
    Set.Up.Robot, a move; the axes then hunt round their targets): the CPU time
    the simulator and the lab server take over WINDOW_S of wall time, as a share
    of one core (goal: under 15 %). Chromium's own share is printed apart.
-2. Full speed: the simulator's instruction rate with the lab and the page open
-   (simulated seconds per wall second x RATE) beside build/pdp11 alone running
-   the same machine with the same servo (goal: at most 10 % lower); and the
-   same per CPU second of the simulator, which the host's other load moves less;
-   and build/pdp11 with the LAB device attached (writing to /dev/null) against
-   without, both without a browser: the device's own cost.
-Figures depend on the host and on what else runs on it: the runs without the lab
-are the best of three; the lab's are one window each.
+2. Full speed: a compute-bound word (lab_workload.py: 30 million empty LOOPs,
+   the servo interrupting at 60 Hz of simulated time) timed from the typed line
+   to its ` ok`, in the lab with the page open and on build/pdp11 alone with the
+   same kernel, disk and set-up; executed instructions per wall second and per
+   CPU second of the simulator (goal: at most 10 % lower), the CPU the server and
+   Chromium take meanwhile; and build/pdp11 with the LAB device attached
+   (writing to /dev/null) against without: the device's own cost.
+Figures depend on the host and on what else runs on it: each full-speed figure
+is the best of lab_workload.REPEATS runs.
 """
-import os
-import re
-import resource
-import shutil
 import tempfile
 import time
 from pathlib import Path
 
-from harness.lab.launch import ROOT, LabProcess, have_browser, headless_browser
-from harness.machine import simh
-from harness.machine.console_session import KERNEL
+from harness.bench import lab_workload as workload
+from harness.lab.launch import LabProcess, have_browser, headless_browser
 
 RATE = 300_000
 WINDOW_S = 10.0
-SETUP = ("1000 LOAD", "Set.Up.Robot", "800 800 400 0 Abs.Move")
-SETUP_INSTRUCTIONS = 6_000_000        # 20 simulated seconds: the load, the set-up, the move
-BASELINE_INSTRUCTIONS = 150_000_000   # 500 simulated seconds: a few host seconds
-TICKS_PER_S = os.sysconf("SC_CLK_TCK")
-
-
-def cpu_seconds(pid):
-    """User + system CPU seconds of one process (and its waited-for children)."""
-    fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
-    return sum(int(f) for f in fields[11:15]) / TICKS_PER_S
+DEVICE_ONLY = "attach lab /dev/null\nset lab speed=0\n"
 
 
 def browser_pids():
@@ -71,36 +58,34 @@ def choose_speed(page, speed):
         time.sleep(0.05)
 
 
+def measure_real(page, pids):
+    """The shares of one core over WINDOW_S at real pace, the pace, the frame rate."""
+    choose_speed(page, "real")
+    time.sleep(2.0)                                  # the pacing settles
+    frames, sim_time = page.execute_script("return window.lab.frames"), status(page)["time"]
+    run = workload.timed(pids, lambda: time.sleep(WINDOW_S))
+    real = {name: run.share(name) for name in pids}
+    real["pace"] = (status(page)["time"] - sim_time) / run.wall
+    real["fps"] = (page.execute_script("return window.lab.frames") - frames) / run.wall
+    return real
+
+
 def measure_lab(tmp):
+    """The lab at real pace, then the workload at full speed, the page open."""
     lab = LabProcess(tmp, speed="full")
     page = headless_browser()
     try:
         page.get(lab.url)
         while not page.execute_script("return window.lab.connected && window.lab.perAxis.length"):
             time.sleep(0.05)
-        for line in SETUP:
+        for line in workload.SETUP + (workload.DEFINE,):
             typed(page, line)
-        choose_speed(page, "real")
-        time.sleep(2.0)                                  # the pacing settles
-        pids = {"simulator": lab.simulator_pid(), "server": lab.proc.pid}
-        chromium = browser_pids()
-        before = {k: cpu_seconds(p) for k, p in pids.items()}
-        chromium_before = sum(cpu_seconds(p) for p in chromium)
-        frames_before, wall = page.execute_script("return window.lab.frames"), time.monotonic()
-        sim_before = status(page)["time"]
-        time.sleep(WINDOW_S)
-        wall = time.monotonic() - wall
-        real = {k: (cpu_seconds(p) - before[k]) / wall for k, p in pids.items()}
-        real["chromium"] = (sum(cpu_seconds(p) for p in chromium) - chromium_before) / wall
-        real["pace"] = (status(page)["time"] - sim_before) / wall
-        real["fps"] = (page.execute_script("return window.lab.frames") - frames_before) / wall
+        pids = {"simulator": [lab.simulator_pid()], "server": [lab.proc.pid],
+                "chromium": browser_pids()}
+        real = measure_real(page, pids)
         choose_speed(page, "full")
         time.sleep(1.0)
-        t0, w0, c0 = status(page)["time"], time.monotonic(), cpu_seconds(pids["simulator"])
-        time.sleep(WINDOW_S)
-        instructions = (status(page)["time"] - t0) * RATE
-        full = (instructions / (time.monotonic() - w0),
-                instructions / (cpu_seconds(pids["simulator"]) - c0))
+        full = workload.page_runs(page, pids)
         page.find_element("css selector", "#terminal textarea").send_keys("BYE\n")
         lab.proc.wait(timeout=60)
     finally:
@@ -109,32 +94,15 @@ def measure_lab(tmp):
     return real, full
 
 
-def run_alone(tmp, instructions, extra=""):
-    """build/pdp11, no lab, the set-up typed, `instructions` run: wall and CPU seconds."""
-    disk = Path(tmp) / "alone.dsk"
-    shutil.copyfile(ROOT / "build" / "robot.dsk", disk)
-    script = f"attach rl0 {disk}\n{extra}load {KERNEL}\nstep {instructions}\n"
-    start, cpu = time.monotonic(), resource.getrusage(resource.RUSAGE_CHILDREN)
-    out = simh.run(script, keyboard="\r".join(SETUP) + "\r", timeout=900)
-    wall = time.monotonic() - start
-    used = resource.getrusage(resource.RUSAGE_CHILDREN)
-    if not re.search(r"Abs\.Move\s+ok", out):
-        raise RuntimeError("the run without the lab did not take the move:\n" + out[-500:])
-    return wall, used.ru_utime + used.ru_stime - cpu.ru_utime - cpu.ru_stime
+def rates(instructions, runs):
+    """Instructions per wall second and per CPU second of the simulator, each the
+    best of the runs (the host's other load only ever slows a run down)."""
+    return (instructions / min(r.wall for r in runs),
+            instructions / min(r.cpu["simulator"] for r in runs))
 
 
-def measure_alone(tmp, extra="", repeats=3):
-    """The rate of build/pdp11 alone over the same phase as the lab's (the servo
-    hunting after the move): a run to the end of the set-up, subtracted from a
-    run BASELINE_INSTRUCTIONS longer; per wall and per CPU second, the best of
-    `repeats` (the host's other load only ever slows a run down)."""
-    best_wall = best_cpu = 0.0
-    for _ in range(repeats):
-        wall0, cpu0 = run_alone(tmp, SETUP_INSTRUCTIONS, extra)
-        wall1, cpu1 = run_alone(tmp, SETUP_INSTRUCTIONS + BASELINE_INSTRUCTIONS, extra)
-        best_wall = max(best_wall, BASELINE_INSTRUCTIONS / (wall1 - wall0))
-        best_cpu = max(best_cpu, BASELINE_INSTRUCTIONS / (cpu1 - cpu0))
-    return best_wall, best_cpu
+def drop(lab, alone):
+    return 100 * (1 - lab / alone)
 
 
 def main():
@@ -143,26 +111,38 @@ def main():
               "(make lab-browser)")
         return 0
     with tempfile.TemporaryDirectory(prefix="bench-lab-") as tmp:
-        real, (lab_rate, lab_cpu) = measure_lab(tmp)
-        alone_rate, alone_cpu = measure_alone(tmp)
-        _, device_cpu = measure_alone(tmp, "attach lab /dev/null\n")
+        real, lab_runs = measure_lab(tmp)
+        alone_runs = workload.bare_runs(tmp)
+        device_runs = workload.bare_runs(tmp, DEVICE_ONLY)
+        instructions = workload.instructions(tmp)
     share = real["simulator"] + real["server"]
     print(f"lab at real pace, page open ({WINDOW_S:.0f} s, servo hunting): simulator "
           f"{100 * real['simulator']:.1f} % + server {100 * real['server']:.1f} % = "
           f"{100 * share:.1f} % of one core (goal < 15 %); headless Chromium "
           f"{100 * real['chromium']:.1f} %; pace {real['pace']:.3f} simulated s per s; "
           f"page {real['fps']:.0f} frames/s")
-    print(f"full speed: with the lab and the page {lab_rate / 1e6:.2f} M instructions/s, "
-          f"build/pdp11 alone {alone_rate / 1e6:.2f} M/s: "
-          f"{100 * (1 - lab_rate / alone_rate):+.1f} % lower (goal <= 10 %); per CPU second "
-          f"of the simulator (what the host's other load does not move): "
-          f"{lab_cpu / 1e6:.2f} against {alone_cpu / 1e6:.2f} M, "
-          f"{100 * (1 - lab_cpu / alone_cpu):+.1f} %")
-    print(f"the LAB device alone (attached, full speed, its rows written), same conditions: "
-          f"{device_cpu / 1e6:.2f} against {alone_cpu / 1e6:.2f} M instructions per CPU second, "
-          f"{100 * (1 - device_cpu / alone_cpu):+.1f} % (best of three each; on a shared host "
-          "runs of the same work differ by 10 % or more)")
+    lab_wall, lab_cpu = rates(instructions, lab_runs)
+    alone_wall, alone_cpu = rates(instructions, alone_runs)
+    _, device_cpu = rates(instructions, device_runs)
+    fastest = workload.best(lab_runs)
+    print(f"full speed, {workload.WORK!r} ({instructions / 1e6:.1f} M instructions, "
+          f"{instructions / RATE:.0f} simulated s), best of {workload.REPEATS}:")
+    print(f"  per wall second: lab + page {lab_wall / 1e6:.1f} M/s, build/pdp11 alone "
+          f"{alone_wall / 1e6:.1f} M/s: {drop(lab_wall, alone_wall):+.1f} % (goal <= 10 %); "
+          f"runs {fmt(r.wall for r in lab_runs)} s against {fmt(r.wall for r in alone_runs)} s")
+    print(f"  per CPU second of the simulator: {lab_cpu / 1e6:.1f} against "
+          f"{alone_cpu / 1e6:.1f} M: {drop(lab_cpu, alone_cpu):+.1f} %")
+    print(f"  meanwhile (the lab's fastest run): simulator {100 * fastest.share('simulator'):.0f} %, "
+          f"server {100 * fastest.share('server'):.0f} %, headless Chromium "
+          f"{100 * fastest.share('chromium'):.0f} % of one core")
+    print(f"  the LAB device alone (attached, its rows to /dev/null, no server, no page): "
+          f"{device_cpu / 1e6:.1f} against {alone_cpu / 1e6:.1f} M per CPU second, "
+          f"{drop(device_cpu, alone_cpu):+.1f} %")
     return 0
+
+
+def fmt(values):
+    return "/".join(f"{v:.2f}" for v in values)
 
 
 if __name__ == "__main__":

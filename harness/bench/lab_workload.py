@@ -1,0 +1,113 @@
+"""The lab bench's full-speed workload (make bench-lab): a FORTH word that runs
+a fixed number of instructions, timed from the moment its line is typed to the
+` ok`, on build/pdp11 alone (no lab) and in the lab with the page open.
+
+The instruction count comes from the simulator's own clock (SHOW TIME, which
+counts instructions; the kernel's WAIT leaps, but the word never waits): two
+batch runs typing the same lines, with and without the word's line, each
+ending at (BYE)'s HALT; their difference is what the word costs, servo
+interrupts included.
+"""
+import os
+import re
+import shutil
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+from harness.machine import simh
+from harness.machine.console_session import KERNEL
+from harness.machine.machine import Machine
+
+ROOT = Path(__file__).resolve().parents[2]
+SETUP = ("1000 LOAD", "Set.Up.Robot", "800 800 400 0 Abs.Move")
+DEFINE = ": BENCH.SPIN ( n -- ) 0 DO 10000 0 DO LOOP LOOP ;"
+WORK = "3000 BENCH.SPIN"          # 30 million empty LOOPs: a few host seconds
+REPEATS = 3
+TICKS_PER_S = os.sysconf("SC_CLK_TCK")
+SIM_TIME = re.compile(r"Time:\s+(\d+)")
+
+
+def cpu_seconds(pid):
+    """User + system CPU seconds of one process."""
+    fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+    return sum(int(f) for f in fields[11:13]) / TICKS_PER_S
+
+
+@dataclass
+class Run:
+    """One timed run of WORK: wall seconds, and CPU seconds per process name."""
+    wall: float
+    cpu: dict
+
+    def share(self, name):
+        return self.cpu[name] / self.wall
+
+
+def timed(pids, work):
+    """Run work() (it returns the wall seconds it measured itself, or None for
+    the host's); the CPU each of `pids` ({name: [pid, ...]}) used meanwhile."""
+    def used():
+        return {name: sum(cpu_seconds(p) for p in group) for name, group in pids.items()}
+    before, start = used(), time.monotonic()
+    wall = work() or time.monotonic() - start
+    after = used()
+    return Run(wall, {name: after[name] - before[name] for name in pids})
+
+
+def best(runs):
+    """The fastest by wall clock (the host's other load only ever slows a run)."""
+    return min(runs, key=lambda r: r.wall)
+
+
+def fresh_disk(tmp):
+    disk = Path(tmp) / "bench.dsk"
+    shutil.copyfile(ROOT / "build" / "robot.dsk", disk)
+    return disk
+
+
+def instructions(tmp):
+    """The instructions WORK takes, from two batch runs (see the docstring)."""
+    def halted_at(lines):
+        keys = "\r".join(SETUP + (DEFINE,) + lines + ("(BYE)",)) + "\r"
+        out = simh.run(f"attach rl0 {fresh_disk(tmp)}\nload {KERNEL}\ngo\nshow time\n",
+                       keyboard=keys, timeout=600)
+        found = SIM_TIME.findall(out)
+        if "BENCH.SPIN" not in out or not found:
+            raise RuntimeError("the calibration run did not reach (BYE):\n" + out[-500:])
+        return int(found[-1])
+    return halted_at((WORK,)) - halted_at(())
+
+
+def bare_runs(tmp, extra=""):
+    """build/pdp11 without the lab (`extra`: SIMH commands before it starts):
+    the set-up, the word defined, WORK typed REPEATS times."""
+    with Machine(disk=fresh_disk(tmp), timeout=600, extra_commands=extra) as m:
+        for line in SETUP + (DEFINE,):
+            m.send(line)
+
+        def work():
+            m.send(WORK)
+        return [timed({"simulator": [m.child.pid]}, work) for _ in range(REPEATS)]
+
+
+# Typed into the page as the terminal would send it; the page's clock runs from
+# the send to the " ok" written to the terminal.
+IN_PAGE = """
+const [line, done] = arguments, write = term.write;
+let text = "";
+term.write = function (data, callback) {
+  write.call(term, data, callback);
+  text += data;
+  if (text.includes(" ok")) { term.write = write; done((performance.now() - start) / 1000); }
+};
+const start = performance.now();
+send({ t: "key", d: line + "\\r" });
+"""
+
+
+def page_runs(page, pids):
+    """WORK typed REPEATS times into the lab's page (the word already defined)."""
+    page.set_script_timeout(600)
+    return [timed(pids, lambda: page.execute_async_script(IN_PAGE, WORK))
+            for _ in range(REPEATS)]
