@@ -2,8 +2,8 @@
 
 Messages to the page (JSON): hello (end stops, servo names, the console so far),
 con (console output), data (plant samples, simulated time, run state, the
-servo's words; about 30 a second), ended. From the page: key (typed text), speed
-(real, x10, full), pause, run, step. Who may connect: guard.py.
+servo's words; about 30 a second, 10 at full speed), ended. From the page: key
+(typed text), speed (real, x10, full), pause, run, step. Who may connect: guard.py.
 """
 import asyncio
 import json
@@ -27,6 +27,8 @@ VENDOR = {  # URL name -> file installed by `npm ci` (mk/lab.mk)
     "addon-fit.js": "@xterm/addon-fit/lib/addon-fit.js",
 }
 FRAME_S = 1 / 30                 # how often plant rows and the servo's words go out
+FULL_SPEED_FRAME_S = 1 / 10      # at full speed: snapshots anyway, and Chromium's drawing
+                                 # would take the simulator's core (docs/lab.md, cost)
 PROBE_S = 1.0                    # how often the dictionary's heads are looked at
 ROWS_PER_FRAME = 400             # more than this (fast runs) are thinned per axis
 SCROLLBACK = 1 << 17
@@ -45,6 +47,7 @@ class Lab:
         self.rows = []
         self.status = {"time": 0.0, "tick": 0, "state": "run", "speed": speed}
         self.servo = {}
+        self.sent = None                 # the status and servo words the pages last had
         self.done = asyncio.Event()
         self.safe = None
 
@@ -99,13 +102,13 @@ class Lab:
 
     async def frames(self):
         while not self.done.is_set():
-            await asyncio.sleep(FRAME_S)
-            if self.pages:
-                rows, self.rows = thin(self.rows, ROWS_PER_FRAME), []
+            await asyncio.sleep(frame_interval(self.status["speed"]))
+            rows, self.rows = thin(self.rows, ROWS_PER_FRAME), []
+            state = json.dumps([self.status, self.servo])
+            if self.pages and news(rows, state, self.sent):
                 self.broadcast({"t": "data", "rows": rows, "status": self.status,
                                 "servo": self.servo})
-            else:
-                self.rows = []
+                self.sent = state
 
     async def probes(self):
         while not self.done.is_set():
@@ -123,6 +126,19 @@ class Lab:
             self.sim.command(f"speed {SPEEDS[message['v']]}")
         elif kind in ("pause", "run", "step"):
             self.sim.command(kind)
+
+
+def frame_interval(speed):
+    """Seconds between two data messages: fewer at full speed, where every frame
+    shows a jump of several simulated seconds and the page's drawing competes
+    with the simulator for the host's cores."""
+    return FULL_SPEED_FRAME_S if speed == "full" else FRAME_S
+
+
+def news(rows, state, sent):
+    """Whether a frame holds anything the pages have not had: a paused run sends
+    nothing, so the page does not redraw an unchanged picture 30 times a second."""
+    return bool(rows) or state != sent
 
 
 def make_app(lab, token, port_of):
@@ -158,6 +174,7 @@ def make_app(lab, token, port_of):
         await ws.prepare(request)
         lab.pages.add(ws)
         await ws.send_str(json.dumps(lab.hello()))
+        lab.sent = None                   # the next frame brings it the servo's words
         try:
             async for msg in ws:
                 if msg.type == WSMsgType.TEXT:

@@ -395,6 +395,7 @@ function buildTable() {
     lab.perAxis.map((n) => `<th>${SHORT[n] || n}</th>`).join("") + "</tr>";
 }
 
+let tableHtml = "";
 function drawTable() {
   const body = document.querySelector("#servo tbody");
   const known = lab.perAxis.filter((n) => n in lab.servo);
@@ -414,7 +415,7 @@ function drawTable() {
     ? `${singles.join(", ")} \u00b7 block 1000's variables, read each 60 Hz tick`
     : "The servo's variables appear once the blocks define them (1000 LOAD): they are found by name in the dictionary.";
   html += `<tr class="note"><td colspan="${lab.perAxis.length + 2}">${note}</td></tr>`;
-  body.innerHTML = html;
+  if (html !== tableHtml) body.innerHTML = tableHtml = html;   // unchanged: no relayout
 }
 
 // ---- the frame loop -------------------------------------------------------------------------
