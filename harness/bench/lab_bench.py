@@ -58,40 +58,63 @@ def choose_speed(page, speed):
         time.sleep(0.05)
 
 
-def measure_real(page, pids):
-    """The shares of one core over WINDOW_S at real pace, the pace, the frame rate."""
-    choose_speed(page, "real")
-    time.sleep(2.0)                                  # the pacing settles
-    frames, sim_time = page.execute_script("return window.lab.frames"), status(page)["time"]
-    run = workload.timed(pids, lambda: time.sleep(WINDOW_S))
-    real = {name: run.share(name) for name in pids}
-    real["pace"] = (status(page)["time"] - sim_time) / run.wall
-    real["fps"] = (page.execute_script("return window.lab.frames") - frames) / run.wall
-    return real
+def choose_state(page, state):
+    """run or pause, by the page's Pause/Run button."""
+    if status(page)["state"] != state:
+        page.find_element("css selector", "#pause").click()
+    while status(page)["state"] != state:
+        time.sleep(0.05)
 
 
-def measure_lab(tmp):
-    """The lab at real pace, then the workload at full speed, the page open."""
-    lab = LabProcess(tmp, speed="full")
-    page = headless_browser()
-    try:
-        page.get(lab.url)
-        while not page.execute_script("return window.lab.connected && window.lab.perAxis.length"):
+class Lab:
+    """`python -m harness lab` with its page open in headless Chromium, the
+    set-up typed and the word defined."""
+
+    def __init__(self, tmp):
+        self.process = LabProcess(tmp, speed="full")
+        self.page = headless_browser()
+        self.page.get(self.process.url)
+        while not self.page.execute_script(
+                "return window.lab.connected && window.lab.perAxis.length"):
             time.sleep(0.05)
         for line in workload.SETUP + (workload.DEFINE,):
-            typed(page, line)
-        pids = {"simulator": [lab.simulator_pid()], "server": [lab.proc.pid],
-                "chromium": browser_pids()}
-        real = measure_real(page, pids)
-        choose_speed(page, "full")
-        time.sleep(1.0)
-        full = workload.page_runs(page, pids)
-        page.find_element("css selector", "#terminal textarea").send_keys("BYE\n")
-        lab.proc.wait(timeout=60)
-    finally:
-        page.quit()
-        lab.stop()
-    return real, full
+            typed(self.page, line)
+        self.server = {"server": [self.process.proc.pid], "chromium": browser_pids()}
+        self.pids = {"simulator": [self.process.simulator_pid()], **self.server}
+
+    def real_pace(self):
+        """The shares of one core over WINDOW_S at real pace, the pace, the frame rate."""
+        page = self.page
+        choose_speed(page, "real")
+        time.sleep(2.0)                                  # the pacing settles
+        frames, sim_time = page.execute_script("return window.lab.frames"), status(page)["time"]
+        run = workload.timed(self.pids, lambda: time.sleep(WINDOW_S))
+        real = {name: run.share(name) for name in self.pids}
+        real["pace"] = (status(page)["time"] - sim_time) / run.wall
+        real["fps"] = (page.execute_script("return window.lab.frames") - frames) / run.wall
+        return real
+
+    def hold(self):
+        """Paused: the simulator waits, the page gets nothing new to draw."""
+        choose_state(self.page, "pause")
+
+    def full_speed_run(self):
+        choose_state(self.page, "run")
+        choose_speed(self.page, "full")
+        time.sleep(1.0)                                  # a few frames at full speed first
+        return workload.page_run(self.page, self.pids)
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        try:
+            choose_state(self.page, "run")
+            self.page.find_element("css selector", "#terminal textarea").send_keys("BYE\n")
+            self.process.proc.wait(timeout=60)
+        finally:
+            self.page.quit()
+            self.process.stop()
 
 
 def rates(instructions, runs):
@@ -110,35 +133,53 @@ def main():
         print("bench-lab: skipped: Debian's chromium and chromium-driver are not installed "
               "(make lab-browser)")
         return 0
+    runs = {"lab": [], "alone": [], "device": []}
     with tempfile.TemporaryDirectory(prefix="bench-lab-") as tmp:
-        real, lab_runs = measure_lab(tmp)
-        alone_runs = workload.bare_runs(tmp)
-        device_runs = workload.bare_runs(tmp, DEVICE_ONLY)
         instructions = workload.instructions(tmp)
+        with Lab(tmp) as lab, workload.Bare(tmp, "alone") as alone, \
+                workload.Bare(tmp, "device", DEVICE_ONLY) as device:
+            real = lab.real_pace()
+            for _ in range(workload.REPEATS):          # interleaved: the host's load
+                lab.hold()                             # moves all three alike
+                runs["alone"].append(alone.run(lab.server))
+                runs["device"].append(device.run(lab.server))
+                runs["lab"].append(lab.full_speed_run())
+    print_real_pace(real)
+    print_full_speed(instructions, runs)
+    return 0
+
+
+def print_real_pace(real):
     share = real["simulator"] + real["server"]
     print(f"lab at real pace, page open ({WINDOW_S:.0f} s, servo hunting): simulator "
           f"{100 * real['simulator']:.1f} % + server {100 * real['server']:.1f} % = "
           f"{100 * share:.1f} % of one core (goal < 15 %); headless Chromium "
           f"{100 * real['chromium']:.1f} %; pace {real['pace']:.3f} simulated s per s; "
           f"page {real['fps']:.0f} frames/s")
-    lab_wall, lab_cpu = rates(instructions, lab_runs)
-    alone_wall, alone_cpu = rates(instructions, alone_runs)
-    _, device_cpu = rates(instructions, device_runs)
-    fastest = workload.best(lab_runs)
+
+
+def print_full_speed(instructions, runs):
+    lab, alone = runs["lab"], runs["alone"]
+    lab_wall, lab_cpu = rates(instructions, lab)
+    alone_wall, alone_cpu = rates(instructions, alone)
+    device_wall, device_cpu = rates(instructions, runs["device"])
+    with_lab, without = workload.best(lab), workload.best(alone)
     print(f"full speed, {workload.WORK!r} ({instructions / 1e6:.1f} M instructions, "
-          f"{instructions / RATE:.0f} simulated s), best of {workload.REPEATS}:")
+          f"{instructions / RATE:.0f} simulated s), typed to ok, best of {len(lab)} "
+          "(interleaved: alone, device, lab):")
     print(f"  per wall second: lab + page {lab_wall / 1e6:.1f} M/s, build/pdp11 alone "
           f"{alone_wall / 1e6:.1f} M/s: {drop(lab_wall, alone_wall):+.1f} % (goal <= 10 %); "
-          f"runs {fmt(r.wall for r in lab_runs)} s against {fmt(r.wall for r in alone_runs)} s")
+          f"runs {fmt(r.wall for r in lab)} s against {fmt(r.wall for r in alone)} s")
     print(f"  per CPU second of the simulator: {lab_cpu / 1e6:.1f} against "
           f"{alone_cpu / 1e6:.1f} M: {drop(lab_cpu, alone_cpu):+.1f} %")
-    print(f"  meanwhile (the lab's fastest run): simulator {100 * fastest.share('simulator'):.0f} %, "
-          f"server {100 * fastest.share('server'):.0f} %, headless Chromium "
-          f"{100 * fastest.share('chromium'):.0f} % of one core")
-    print(f"  the LAB device alone (attached, its rows to /dev/null, no server, no page): "
-          f"{device_cpu / 1e6:.1f} against {alone_cpu / 1e6:.1f} M per CPU second, "
-          f"{drop(device_cpu, alone_cpu):+.1f} %")
-    return 0
+    print(f"  % of one core meanwhile (fastest runs): lab: simulator "
+          f"{100 * with_lab.share('simulator'):.0f}, server {100 * with_lab.share('server'):.0f}, "
+          f"Chromium {100 * with_lab.share('chromium'):.0f}; alone (the lab paused): simulator "
+          f"{100 * without.share('simulator'):.0f}, server {100 * without.share('server'):.0f}, "
+          f"Chromium {100 * without.share('chromium'):.0f}")
+    print(f"  the LAB device alone (attached, rows to /dev/null, no server or page): "
+          f"{device_wall / 1e6:.1f} M/s, {device_cpu / 1e6:.1f} M per CPU second: "
+          f"{drop(device_wall, alone_wall):+.1f} % and {drop(device_cpu, alone_cpu):+.1f} %")
 
 
 def fmt(values):

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from harness.machine import simh
-from harness.machine.console_session import KERNEL
+from harness.machine.console_session import IDLE, KERNEL
 from harness.machine.machine import Machine
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -60,8 +60,8 @@ def best(runs):
     return min(runs, key=lambda r: r.wall)
 
 
-def fresh_disk(tmp):
-    disk = Path(tmp) / "bench.dsk"
+def fresh_disk(tmp, name="bench"):
+    disk = Path(tmp) / f"{name}.dsk"
     shutil.copyfile(ROOT / "build" / "robot.dsk", disk)
     return disk
 
@@ -79,16 +79,29 @@ def instructions(tmp):
     return halted_at((WORK,)) - halted_at(())
 
 
-def bare_runs(tmp, extra=""):
-    """build/pdp11 without the lab (`extra`: SIMH commands before it starts):
-    the set-up, the word defined, WORK typed REPEATS times."""
-    with Machine(disk=fresh_disk(tmp), timeout=600, extra_commands=extra) as m:
-        for line in SETUP + (DEFINE,):
-            m.send(line)
+class Bare:
+    """build/pdp11 without the lab, booted as `python -m harness console --fast`
+    boots it (SET CPU IDLE: its idle prompt sleeps, so it can wait beside the
+    lab), `extra` SIMH commands before it starts; the set-up typed, the word
+    defined."""
 
+    def __init__(self, tmp, name, extra=""):
+        self.machine = Machine(disk=fresh_disk(tmp, name), timeout=600,
+                               extra_commands=f"{IDLE}\n{extra}")
+        for line in SETUP + (DEFINE,):
+            self.machine.send(line)
+
+    def run(self, others):
+        """WORK typed once; `others` ({name: [pid, ...]}) watched meanwhile."""
         def work():
-            m.send(WORK)
-        return [timed({"simulator": [m.child.pid]}, work) for _ in range(REPEATS)]
+            self.machine.send(WORK)
+        return timed({"simulator": [self.machine.child.pid], **others}, work)
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.machine.close()
 
 
 # Typed into the page as the terminal would send it; the page's clock runs from
@@ -106,8 +119,7 @@ send({ t: "key", d: line + "\\r" });
 """
 
 
-def page_runs(page, pids):
-    """WORK typed REPEATS times into the lab's page (the word already defined)."""
+def page_run(page, pids):
+    """WORK typed into the lab's page once (the word already defined)."""
     page.set_script_timeout(600)
-    return [timed(pids, lambda: page.execute_async_script(IN_PAGE, WORK))
-            for _ in range(REPEATS)]
+    return timed(pids, lambda: page.execute_async_script(IN_PAGE, WORK))
