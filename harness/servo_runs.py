@@ -49,6 +49,22 @@ def report(r, label):
     print(f"t={r.time():8.3f} s  {label}\n    {cells}")
 
 
+def run_moves(r):
+    """The moves run's lines (MOVES) on a set-up Robot, reporting each; returns
+    [(sent, returned)]: the simulated times each line was sent and answered."""
+    report(r, "after Set.Up.Robot")
+    lines = []
+    for x, settle in MOVES:
+        start = r.time()
+        r.send(f"{x} 0 0 0 Abs.Move Move.Complete?")
+        lines.append((start, r.time()))
+        report(r, f"{x} 0 0 0 Abs.Move Move.Complete? returned after "
+                  f"{r.time() - start:.3f} s")
+        r.idle(settle)
+        report(r, f"  {settle} s later")
+    return lines
+
+
 def window(sent, returned, before, after):
     """START:END around a move: from `before` s ahead of the line that started
     it to `after` s past its Move.Complete? (at least `after` s past the line)."""
@@ -88,18 +104,9 @@ def main(argv=None):
     ap.add_argument("--figures", metavar="STEM", help="draw the docs' figures as STEM-*.png")
     a = ap.parse_args(argv)
     a.outdir.mkdir(parents=True, exist_ok=True)
-    lines = []
     with tempfile.TemporaryDirectory() as tmp:
         with session(a.outdir / "moves.csv", a.block, a.then, tmp) as r:
-            report(r, "after Set.Up.Robot")
-            for x, settle in MOVES:
-                start = r.time()
-                r.send(f"{x} 0 0 0 Abs.Move Move.Complete?")
-                lines.append((start, r.time()))
-                report(r, f"{x} 0 0 0 Abs.Move Move.Complete? returned after "
-                          f"{r.time() - start:.3f} s")
-                r.idle(settle)
-                report(r, f"  {settle} s later")
+            lines = run_moves(r)
         with session(a.outdir / "rest.csv", a.block, a.then, tmp) as r:
             r.send(": A. ( a -- ) 4 0 DO DUP I 2* + @ . LOOP DROP ;")
             r.send("1600 800 400 0 Abs.Move Move.Complete?")
