@@ -6,6 +6,7 @@ current build, and these tests fail, naming the sentence, when a figure no
 longer matches. Fix the doc (re-measure: make servo-runs, make bench-robot),
 not the tolerance."""
 import re
+import shutil
 import tempfile
 from pathlib import Path
 
@@ -13,6 +14,7 @@ import pytest
 
 from harness import moves, servo_runs, trace
 from harness.robot import numbers
+from harness.tick_view import open_view
 
 ROOT = Path(__file__).resolve().parents[2]
 
@@ -94,3 +96,15 @@ def test_servo_doc_times_and_windows(capsys):
     for start, end in windows:
         assert any(float(start) <= t0 and t1 <= float(end) for t0, t1 in spans), \
             f"docs/servo.md's --window {start}:{end} holds no whole move (moves: {spans})"
+
+
+def test_servo_doc_tick_table(tmp_path):
+    """servo.md's `python -m harness tick` example is the first table it prints."""
+    text = doc("docs/servo.md")
+    block = re.search(r"```\n(tick \d+, t = .*?)\n```", text, re.S)
+    assert block, "docs/servo.md: no `harness tick` table"
+    disk = tmp_path / "robot.dsk"
+    shutil.copy(servo_runs.DISK, disk)
+    robot, view = open_view(disk)
+    with robot:
+        assert view.step().rstrip() == block.group(1)
