@@ -12,6 +12,8 @@ import argparse
 import importlib
 import sys
 
+from harness.commands.invoke import PROG, run_reported
+
 COMMANDS = {
     "console": "the interactive FORTH console on the robot's PDP-11/23 (what make run starts)",
     "lab": "the lab bench: the FORTH console, the robot, a scope and the servo in a browser page",
@@ -33,7 +35,7 @@ def build_parser(argv):
     """The parser, with the arguments of the subcommand named in argv (if any)."""
     chosen = next((a for a in argv if not a.startswith("-")), None)
     parser = argparse.ArgumentParser(
-        prog="python -m harness",
+        prog=PROG,
         description="Tools for the 1983 Cartesian robot on an emulated PDP-11/23.")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
     subparsers = {}
@@ -53,9 +55,4 @@ def main(argv=None):
         subparsers[args.command].error(f"unrecognized arguments: {' '.join(unknown)}")
     errors = getattr(command_module(args.command), "ERRORS", ())
     name = " ".join(filter(None, (args.command, getattr(args, "action", None))))
-    try:
-        return args.run(args)
-    except errors as err:
-        for line in str(err).splitlines():
-            print(f"{parser.prog} {name}: error: {line}", file=sys.stderr)
-        return 1
+    return run_reported(args, errors, name)

@@ -5,10 +5,10 @@
 #                             build/continuation/ (printed servo, and block 1030),
 #                             and its figures, in docs/img/continuation-*.png
 bench-continuation: $(BUILD)/kernel.lda $(BUILD)/pdp11 $(BUILD)/robot.dsk venv
-	@$(PY) -m harness.continuation_bench
+	@$(PY) -m harness.bench.continuation_bench
 
 continuation-runs: $(BUILD)/kernel.lda $(BUILD)/pdp11 $(BUILD)/robot.dsk venv
-	@$(PY) -m harness.continuation_runs $(BUILD)/continuation --figures docs/img
+	@$(PY) -m harness.bench.continuation_runs $(BUILD)/continuation --figures docs/img
 
 BENCHES += bench-continuation
 .PHONY: bench-continuation continuation-runs

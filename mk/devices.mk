@@ -44,6 +44,6 @@ $(BUILD)/gripper_test: $(DEV_DIR)/gripper_test.c $(ROBOT_OBJ)/gripper.o
 ALL_PRODUCTS += $(BUILD)/pdp11 $(BUILD)/plant_test $(BUILD)/gripper_test $(BUILD)/pdp11-stock
 
 bench-devices: $(BUILD)/pdp11 $(BUILD)/pdp11-stock venv
-	@$(PY) harness/bench_devices.py
+	@$(PY) harness/bench/bench_devices.py
 BENCHES += bench-devices
 .PHONY: bench-devices

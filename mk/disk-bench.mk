@@ -1,7 +1,7 @@
 # mk/disk-bench.mk: instructions spent by the RL02 driver and the block buffers
-# (harness/disk_bench.py), part of make bench.
+# (harness/bench/disk_bench.py), part of make bench.
 bench-disk: all venv
-	@$(PY) -m harness.disk_bench
+	@$(PY) -m harness.bench.disk_bench
 
 BENCHES += bench-disk
 .PHONY: bench-disk

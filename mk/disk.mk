@@ -1,4 +1,4 @@
-# mk/disk.mk: RL02 block disk images (harness/disk.py, blocks/README.md).
+# mk/disk.mk: RL02 block disk images (harness/blocks/disk.py, blocks/README.md).
 #   build/robot.dsk   pristine image packed from blocks/*.txt (rebuilt when they change)
 #   local/robot.dsk   the working disk of the interactive console: copied from the
 #                     pristine image when missing, never overwritten by make (a
@@ -8,7 +8,7 @@
 #                     writes the image's non-blank blocks FROM..TO as blocks/NNNN.txt;
 #                     a file that differs is only replaced with FORCE=1.
 BLOCK_SRCS  := $(wildcard blocks/*.txt)
-DISK_PY     := harness/blockfile.py harness/disk.py harness/commands/disk.py
+DISK_PY     := harness/blocks/blockfile.py harness/blocks/disk.py harness/commands/disk.py
 PRISTINE_DSK := $(BUILD)/robot.dsk
 WORK_DSK    := local/robot.dsk
 

@@ -30,7 +30,7 @@ $(BUILD)/robot.ini: mk/forth.mk pdp11-devices/machine.ini
 kernel: $(BUILD)/kernel.lda $(BUILD)/kernel.map
 
 bench-forth: $(BUILD)/kernel.lda $(PDP11_SIM) venv
-	@$(PY) -m harness.forth_bench
+	@$(PY) -m harness.bench.forth_bench
 
 ALL_PRODUCTS += $(BUILD)/kernel.lda $(BUILD)/kernel.map $(BUILD)/robot.ini
 BENCHES += bench-forth

@@ -14,7 +14,7 @@ regression-update: $(HARNESS_NEEDS)
 	@$(PY) -m harness regress --update
 
 bench-harness: $(HARNESS_NEEDS)
-	@$(PY) -m harness.run_bench
+	@$(PY) -m harness.bench.run_bench
 
 BENCHES += bench-harness
 .PHONY: regression regression-update bench-harness

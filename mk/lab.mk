@@ -33,6 +33,6 @@ test-lab-long: $(LAB_NEEDS) $(PRISTINE_DSK) lab-browser
 	@LAB_LONG=1 $(PY) -m pytest -q tests/lab/test_long_session.py
 
 bench-lab: $(LAB_NEEDS) $(PRISTINE_DSK) lab-browser
-	@$(PY) -m harness.lab.bench
+	@$(PY) -m harness.bench.lab_bench
 BENCHES += bench-lab
 .PHONY: lab lab-assets lab-browser test-lab-long bench-lab

@@ -7,10 +7,10 @@ VARIABLE CODE-OPEN  ( -- a ) \ true while a CODE body is being assembled
 VARIABLE CODE-LFA  ( -- a ) \ header of that word: an error discards it whole
 ' ASSEMBLER >BODY CONSTANT ASSEMBLER-BODY  ( -- a )
 : END-CODE  ( -- )  \ ASM-END first: if it fails, the word is still open
-  ASSEMBLER ASM-END FORTH  0 CODE-OPEN !  CURRENT @ CONTEXT ! ;
+  ASSEMBLER ASM-END FORTH  0 CODE-OPEN !  CURRENT @ VOC-CONTEXT ;
 : ?END-CODE  ( -- )  CODE-OPEN @ IF END-CODE THEN ;
 : ASSEMBLE  ( -- )  \ assembler first, operand slots clear, depth remembered
-  ASSEMBLER-BODY CONTEXT !  TRUE CODE-OPEN !  ASSEMBLER ASM-START FORTH ;
+  ASSEMBLER-BODY VOC-CONTEXT  TRUE CODE-OPEN !  ASSEMBLER ASM-START FORTH ;
 : CODE  ( "name" -- )  \ TOOLS EXT: header whose code field is the machine code that follows
   ?END-CODE ALIGN HERE CODE-LFA !  PARSE-NAME HEADER, ASSEMBLE ;
 : ;CODE  ( colon-sys -- )  \ TOOLS EXT: children run the code after it with W = body

@@ -187,7 +187,7 @@ DODOES CONSTANT 'DODOES  ( -- a )
 \ FORTH-79: : sets CONTEXT to CURRENT. Done only when both are vocabularies, so
 \ that word lists and search orders of standard programs stay as they set them.
 : COLON-CONTEXT  ( -- )
-  CONTEXT @ VOC-NAME CURRENT @ VOC-NAME AND IF CURRENT @ CONTEXT ! THEN ;
+  CONTEXT @ VOC-NAME 0<> CURRENT @ VOC-NAME 0<> AND IF CURRENT @ VOC-CONTEXT THEN ;
 : :  ( "name" -- colon-sys )  \ CORE: also ends an open CODE word (block 1008)
   ?END-CODE  COLON-CONTEXT  LOCALS-CLEAR  NO-LOOPS  ALIGN HERE COLON-LFA !
   PARSE-NAME HEADER, SMUDGE  HERE LAST-XT !  'DOCOL JSR-IP CF,  4 ] ;
@@ -199,9 +199,14 @@ DODOES CONSTANT 'DODOES  ( -- a )
 : WORDLIST,  ( nfa -- wid )  \ an empty word list, linked from VOC-LINK
   ALIGN HERE  0 , 0 , 0 , 0 ,  HERE VOC-LINK @ , VOC-LINK !  SWAP , ;
 : VOCABULARY  ( "name" -- )  \ FORTH-79: the name replaces CONTEXT @ (immediate)
-  CREATE LAST @ WORDLIST, DROP  IMMEDIATE  DOES> CONTEXT ! ;
+  CREATE LAST @ WORDLIST, DROP  IMMEDIATE  DOES> VOC-CONTEXT ;
 VOCABULARY FORTH  ( -- ) \ SEARCH EXT: the kernel's vocabulary
 ' FORTH >BODY CONSTANT FORTH-BODY  ( -- a )
+\ FORTH-79: every vocabulary chains to FORTH. After ONLY (one word list) a
+\ vocabulary other than FORTH that replaces it gets FORTH behind it, so
+\ ONLY FORTH DEFINITIONS 1000 LOAD still finds ( inside ASSEMBLER.
+: VOC-CONTEXT  ( wid -- )  \ the first word list := wid
+  DUP CONTEXT !  FORTH-BODY <> #ORDER @ 2 < AND IF FORTH-BODY CONTEXT 2+ !  2 #ORDER ! THEN ;
 VOCABULARY ASSEMBLER  ( -- ) \ TOOLS EXT: CODE's vocabulary
 : DEFINITIONS  ( -- )  CONTEXT @ CURRENT ! ;  \ SEARCH
 \ CODE END-CODE ;CODE: forth/kernel/code.fs (they need the resident assembler)

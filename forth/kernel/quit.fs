@@ -137,7 +137,7 @@ CREATE ERROR-TEXTS  ( -- a )
 : CLEAR-STACK  ( -- )  \ empty, and the slack below S0 zeroed: a word run on an
   S0 SP!  S0 16 ERASE ;  \ empty stack finds 0 (no address, no count) there
 : CONTEXT-AFTER-ERROR  ( -- )  \ FORTH-79: CONTEXT := CURRENT; an empty order: the boot one
-  #ORDER @ 0= IF ONLY ALSO THEN  CURRENT @ CONTEXT ! ;
+  #ORDER @ 0= IF ONLY ALSO THEN  CURRENT @ VOC-CONTEXT ;
 : RESET-AFTER-ERROR  ( -- )
   DISCARD-DEFINITION  POSTPONE [  0 BLK !  0 SRC-ID !  CONTEXT-AFTER-ERROR
   'ON-ERROR @ ?DUP IF EXECUTE THEN  0 PRIORITY! ;

@@ -51,6 +51,6 @@ CODE NR>  ( -- i*x n ) ( R: i*x n -- )  \ TOOLS EXT
   R> C@ 192 AND  LAST @ DUP C@ ROT OR SWAP C! ;
 
 \ ---- BYE: the simulator stops at (BYE)'s HALT; the console harness sees it there
-\ and leaves as when BYE is typed (CONT, FLUSH, detach, quit: harness/console_session.py)
+\ and leaves as when BYE is typed (CONT, FLUSH, detach, quit: harness/machine/console_session.py)
 CODE (BYE)  ( -- )  HALT,  NEXT,  END-CODE  \ CONT at sim> goes on after the HALT
 : BYE  ( -- )  FLUSH  (BYE) ;  \ TOOLS EXT

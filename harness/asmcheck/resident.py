@@ -10,8 +10,8 @@ import shutil
 import subprocess
 from pathlib import Path
 
-from harness import disk
-from harness.machine import Machine
+from harness.blocks import disk
+from harness.machine.machine import Machine
 
 ROOT = Path(__file__).resolve().parents[2]
 BUILD_FS = ROOT / "forth" / "meta" / "build.fs"

@@ -3,10 +3,10 @@ import argparse
 import shutil
 from pathlib import Path
 
+from harness.blocks.disk import DiskError, check_image
 from harness.commands.argtypes import positive
-from harness.console_session import BUSY_WAIT, HINT, RACK_HINT, session
-from harness.disk import DiskError, check_image
-from harness.simh import PDP11
+from harness.machine.console_session import BUSY_WAIT, HINT, RACK_HINT, session
+from harness.machine.simh import PDP11
 
 ROOT = Path(__file__).resolve().parents[2]
 WORK_DISK = ROOT / "local" / "robot.dsk"
@@ -49,7 +49,7 @@ def configure(parser):
 
 
 def working_disk(requested):
-    """The image to attach, checked (harness.disk.check_image: the console changes
+    """The image to attach, checked (harness.blocks.disk.check_image: the console changes
     it, so it must be writable); the default working copy is made when missing."""
     if requested:
         disk = Path(requested)

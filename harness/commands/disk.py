@@ -1,7 +1,7 @@
 """`disk`: pack a blocks/ directory into an RL02 image, export blocks back to text."""
 import sys
 
-from harness.disk import (BLOCKS, DiskError, block_ranges, carry_out_export, pack,
+from harness.blocks.disk import (BLOCKS, DiskError, block_ranges, carry_out_export, pack,
                           plan_export, read_block_dir, read_image, write_atomic)
 
 ERRORS = (DiskError,)

@@ -4,11 +4,11 @@ import argparse
 import asyncio
 from pathlib import Path
 
+from harness.blocks.disk import DiskError
 from harness.commands.console import ConsoleError, working_disk
-from harness.disk import DiskError
 from harness.lab.server import NODE_MODULES, serve
-from harness.scripted_machine import KERNEL_MAP, read_kernel_map
-from harness.simh import PDP11
+from harness.machine.scripted_machine import KERNEL_MAP, read_kernel_map
+from harness.machine.simh import PDP11
 
 ERRORS = (ConsoleError, DiskError)
 

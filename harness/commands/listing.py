@@ -5,8 +5,9 @@ import sys
 import tempfile
 from pathlib import Path
 
-from harness import simh
-from harness.listing import PRISTINE, ListingError, format_ranges, listable_blocks, make_listing
+from harness.analysis.listing import (PRISTINE, ListingError, format_ranges, listable_blocks,
+                                      make_listing)
+from harness.machine import simh
 
 ERRORS = (ListingError, simh.SimhError)
 

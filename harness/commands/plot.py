@@ -2,10 +2,10 @@
 import argparse
 from pathlib import Path
 
-from harness import moves as mv
+from harness.analysis import moves as mv
+from harness.analysis.plot_errors import PlotError
+from harness.analysis.trace import AXES, TraceError, read
 from harness.commands.argtypes import positive
-from harness.plot_errors import PlotError
-from harness.trace import AXES, TraceError, read
 
 ERRORS = (TraceError, PlotError)
 FIGURES = ("moves", "time", "zero")              # what "all" draws
@@ -130,7 +130,7 @@ def _paths(stem, name, fmt):
 
 def build_figures(args):
     """[(figure, paths)] for what args ask; raises before anything is written."""
-    from harness import plots        # matplotlib: imported only when plotting
+    from harness.analysis import plots        # matplotlib: imported only when plotting
     trace = read(args.trace)
     stem = _stem(args)
     wanted = FIGURES if args.figure == "all" else (args.figure,)
@@ -163,7 +163,7 @@ def build_figures(args):
                                       args.kv, args.v_idle, args.hold),
                     _paths(stem, "zero", args.format)))
     if args.figure in ON_REQUEST:
-        from harness import path_plots
+        from harness.analysis import path_plots
         fig = (path_plots.xy_figure(trace, args.via, args.window) if args.figure == "xy"
                else path_plots.gripper_figure(trace, args.window))
         out.append((fig, _paths(stem, args.figure, args.format)))
@@ -171,7 +171,7 @@ def build_figures(args):
 
 
 def run(args):
-    from harness import plots
+    from harness.analysis import plots
     figures = build_figures(args)
     try:
         plots.save_all(figures)

@@ -1,10 +1,10 @@
 """`regress`: the regression scenarios (tests/regression), compared or updated."""
 import argparse
 
-from harness import regression
+from harness.analysis.trace_features import FeatureError
+from harness.blocks.disk import DiskError
+from harness.commands import regression
 from harness.commands.run import PRISTINE, check_start_image
-from harness.disk import DiskError
-from harness.trace_features import FeatureError
 
 ERRORS = (ValueError, FeatureError, DiskError)
 

@@ -5,12 +5,12 @@ import sys
 import tempfile
 from pathlib import Path
 
-from harness import script
+from harness.blocks.disk import DiskError, check_image, write_atomic
 from harness.commands.argtypes import positive
-from harness.disk import DiskError, check_image, write_atomic
-from harness.script_run import run_steps
-from harness.scripted_machine import KERNEL, ScriptError, ScriptedMachine
-from harness.simh import PDP11, SimhError
+from harness.machine import script
+from harness.machine.script_run import run_steps
+from harness.machine.scripted_machine import KERNEL, ScriptError, ScriptedMachine
+from harness.machine.simh import PDP11, SimhError
 
 ERRORS = (script.ScriptSyntaxError, ScriptError, SimhError, DiskError)
 PRISTINE = Path(__file__).resolve().parents[2] / "build" / "robot.dsk"
@@ -80,7 +80,7 @@ def _check_writable(path):
 
 def check_start_image(disk):
     """The image a run starts from is only read (each run boots a copy): it must be
-    there, readable and RL02-sized (harness.disk.check_image); DiskError if not."""
+    there, readable and RL02-sized (harness.blocks.disk.check_image); DiskError if not."""
     if disk == PRISTINE and not disk.exists():
         raise DiskError(f"{disk}: no such disk image (run make)")
     check_image(disk, writable=False)

@@ -1,14 +1,14 @@
-"""`tick`: walk the 1983 servo one 60 Hz tick at a time (harness/tick_view.py)."""
+"""`tick`: walk the 1983 servo one 60 Hz tick at a time (harness/analysis/tick_view.py)."""
 import argparse
 import shutil
 import sys
 import tempfile
 from pathlib import Path
 
+from harness.analysis.tick_view import SETUP, WATCH, open_view
 from harness.commands.argtypes import count
-from harness.machine import ForthError, MachineHalted
-from harness.scripted_machine import ScriptError
-from harness.tick_view import SETUP, WATCH, open_view
+from harness.machine.machine import ForthError, MachineHalted
+from harness.machine.scripted_machine import ScriptError
 
 ERRORS = (ForthError, MachineHalted, ScriptError, RuntimeError)
 PRISTINE = Path(__file__).resolve().parents[2] / "build" / "robot.dsk"

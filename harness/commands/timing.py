@@ -2,9 +2,10 @@
 import argparse
 from pathlib import Path
 
-from harness import servo_timing, simh
+from harness.analysis import servo_timing
+from harness.analysis.timing import CHUNK, TimingError, measure
 from harness.commands.argtypes import count
-from harness.timing import CHUNK, TimingError, measure
+from harness.machine import simh
 
 ERRORS = (TimingError, simh.SimhError)
 

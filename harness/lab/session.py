@@ -5,7 +5,7 @@ attached to a FIFO in a private temporary directory; a second FIFO carries the
 lab's commands (speed, pause, step, watch, dump) to the device. Everything is
 read on the asyncio loop, so the simulator never waits long for a reader.
 Leaving (BYE, ^D, ^C or QUIT at sim>, or close()) is the console's: FLUSH, check,
-detach, quit (harness/console_session.py).
+detach, quit (harness/machine/console_session.py).
 """
 import asyncio
 import os
@@ -15,11 +15,11 @@ from pathlib import Path
 
 import pexpect
 
-from harness import simh
-from harness.console_session import KERNEL, leave, say
-from harness.console_watch import Leave, LineWatcher
 from harness.lab.feed import Lines, lab_row
-from harness.simh import MACHINE_INI, ROOT
+from harness.machine import simh
+from harness.machine.console_session import KERNEL, leave, say
+from harness.machine.console_watch import Leave, LineWatcher
+from harness.machine.simh import MACHINE_INI, ROOT
 
 SPEEDS = {"real": 1, "x10": 10, "full": 0}
 STOPS = re.compile(rb"^\s+([XYZT])\s+\S+\s+\S+\s+\S+\s+\S+\s+(-?[\d.]+)\s+(-?[\d.]+)\s+\S+\s*$",
@@ -124,7 +124,7 @@ class Simulator:
     # ---- from the page ------------------------------------------------------------
     def keys(self, data):
         """What the user typed; a way out (BYE, ^D, ^C or QUIT at sim>:
-        harness/console_watch.py) starts leaving, as the console does."""
+        harness/machine/console_watch.py) starts leaving, as the console does."""
         if self.leaving:
             return
         try:

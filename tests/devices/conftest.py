@@ -1,4 +1,4 @@
-"""Device tests drive build/pdp11 through harness/simh.py (the root conftest makes
+"""Device tests drive build/pdp11 through harness/machine/simh.py (the root conftest makes
 harness importable); their own helper modules (programs, plantio) live here."""
 import sys
 from pathlib import Path

@@ -1,5 +1,5 @@
 """The PDP-11 programs the device tests run (see pdp11prog.py for conventions)."""
-from harness.pdp11prog import Program, RESULTS
+from harness.analysis.pdp11prog import Program, RESULTS
 
 LKS = 0o177546
 DRV_CSR, DRV_OUT, DRV_IN = 0o167770, 0o167772, 0o167774

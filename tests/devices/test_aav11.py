@@ -1,6 +1,6 @@
 """AAV11-A D/A: 12-bit codes, read-back, byte writes, 2048 at power-up and INIT."""
-from harness import simh
-from harness.pdp11prog import results, examine_results
+from harness.analysis.pdp11prog import results, examine_results
+from harness.machine import simh
 import programs
 
 

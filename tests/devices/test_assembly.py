@@ -2,7 +2,7 @@
 EXAMINE -M, to the text it was written as."""
 import pytest
 
-from harness.pdp11prog import check_listing
+from harness.analysis.pdp11prog import check_listing
 from programs import all_programs
 
 

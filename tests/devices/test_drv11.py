@@ -1,8 +1,8 @@
 """DRV11 (counter multiplexer): register bits, byte writes, INIT, interrupts."""
 import pytest
 
-from harness import simh
-from harness.pdp11prog import results, examine_results
+from harness.analysis.pdp11prog import results, examine_results
+from harness.machine import simh
 import programs
 
 

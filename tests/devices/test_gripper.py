@@ -5,9 +5,9 @@ import csv
 import subprocess
 from pathlib import Path
 
-from harness import simh
-from harness.pdp11prog import examine_results, results
-from harness.robot import parse_show_gripper
+from harness.analysis.pdp11prog import examine_results, results
+from harness.machine import simh
+from harness.machine.robot import parse_show_gripper
 import programs
 
 GRIPPER_TEST = Path(__file__).resolve().parents[2] / "build" / "gripper_test"

@@ -5,8 +5,8 @@ import shutil
 
 import pytest
 
-from harness.robot import Robot, numbers
-from harness.simh import run
+from harness.machine.robot import Robot, numbers
+from harness.machine.simh import run
 
 REGISTERS = {0o177546: "KW11-L LKS", 0o167770: "DRV11 CSR", 0o167772: "DRV11 OUTBUF",
              0o170440: "DAC x", 0o170442: "DAC y", 0o170444: "DAC z", 0o170446: "DAC t"}

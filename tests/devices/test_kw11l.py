@@ -2,8 +2,8 @@
 second, interrupts at vector 100 only with IE set and priority below 6."""
 import pytest
 
-from harness import simh
-from harness.pdp11prog import results, examine_results
+from harness.analysis.pdp11prog import results, examine_results
+from harness.machine import simh
 import programs
 
 RATE = 300000

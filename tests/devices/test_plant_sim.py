@@ -4,8 +4,8 @@ import math
 
 import pytest
 
-from harness import simh
-from harness.pdp11prog import results, examine_results
+from harness.analysis.pdp11prog import results, examine_results
+from harness.machine import simh
 from plantio import AXES, QUIET, show_rows, read_trace
 import programs
 

@@ -1,7 +1,7 @@
 """SIMH's own devices still work in build/pdp11: the RL disk (needed to boot the
 FORTH system) and the console keyboard, now polled at instruction-count pace."""
-from harness import simh
-from harness.pdp11prog import results, examine_results
+from harness.analysis.pdp11prog import results, examine_results
+from harness.machine import simh
 import programs
 
 PATTERN = [0o123456, 0o7, 0o177777, 0o52525]

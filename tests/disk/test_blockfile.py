@@ -1,9 +1,9 @@
-"""harness.blockfile: text <-> 1024-byte blocks, and the validation messages."""
+"""harness.blocks.blockfile: text <-> 1024-byte blocks, and the validation messages."""
 import random
 
 import pytest
 
-from harness.blockfile import (BLOCK_BYTES, BlockError, block_to_text, fused_line_ends,
+from harness.blocks.blockfile import (BLOCK_BYTES, BlockError, block_to_text, fused_line_ends,
                                is_blank, problems_in_text, text_to_block)
 
 

@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from harness.disk import RL02_BYTES
+from harness.blocks.disk import RL02_BYTES
 
 ROOT = Path(__file__).resolve().parents[2]
 

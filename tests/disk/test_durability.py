@@ -1,11 +1,11 @@
-"""FLUSH is durable: a short version of make soak-disk (harness/disk_soak.py), and
+"""FLUSH is durable: a short version of make soak-disk (harness/bench/disk_soak.py), and
 the write-through's failure path (an fsync that fails is a FORTH error)."""
 import shutil
 
 import pytest
 
-from harness import disk_soak
-from harness.machine import ForthError, Machine
+from harness.bench import disk_soak
+from harness.machine.machine import ForthError, Machine
 from tests.run.common import failing_fsync_library, needs_build
 
 @needs_build

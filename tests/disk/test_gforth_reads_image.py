@@ -3,8 +3,8 @@ the RL02 image is block n at byte 1024n, 16 lines of 64 characters."""
 import subprocess
 from pathlib import Path
 
-from harness.blockfile import split_lines
-from harness.disk import pack, read_block_dir
+from harness.blocks.blockfile import split_lines
+from harness.blocks.disk import pack, read_block_dir
 
 ROOT = Path(__file__).resolve().parents[2]
 IMAGE = ROOT / "build" / "robot.dsk"

@@ -1,4 +1,4 @@
-"""Disk images are refused when wrong (harness.disk.check_image), by run, regress and
+"""Disk images are refused when wrong (harness.blocks.disk.check_image), by run, regress and
 console alike: one line naming the file and what is wrong, exit status 1, before
 the simulator starts."""
 import subprocess
@@ -7,8 +7,8 @@ import sys
 import pytest
 
 from harness import cli
+from harness.blocks.disk import RL02_BYTES, DiskError, check_image
 from harness.commands import regress
-from harness.disk import RL02_BYTES, DiskError, check_image
 
 from tests.run.common import ROOT, needs_build
 

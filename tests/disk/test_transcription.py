@@ -1,14 +1,14 @@
 """Blocks 1000-1012 against the OCR seed and blocks/TRANSCRIPTION.md; `1000 LOAD` read
-as LOAD reads it (harness/forthscan.py) against blocks/KERNEL-WORDS.md."""
+as LOAD reads it (harness/analysis/forthscan.py) against blocks/KERNEL-WORDS.md."""
 import re
 from collections import Counter
 from pathlib import Path
 
 import pytest
 
-from harness.blockfile import fused_line_ends, problems_in_text, split_lines, text_to_block
-from harness.disk import block_ranges
-from harness.forthscan import check_load, words
+from harness.analysis.forthscan import check_load, words
+from harness.blocks.blockfile import fused_line_ends, problems_in_text, split_lines, text_to_block
+from harness.blocks.disk import block_ranges
 
 ROOT = Path(__file__).resolve().parents[2]
 BLOCKS = ROOT / "blocks"

@@ -1,7 +1,7 @@
 """Fixtures for the FORTH tests: a booted machine per module (fresh disk)."""
 import pytest
 
-from harness.machine import KERNEL, SIMULATOR, Machine
+from harness.machine.machine import KERNEL, SIMULATOR, Machine
 
 
 @pytest.fixture(scope="module")

@@ -7,7 +7,7 @@ import hashlib
 
 import pytest
 
-from harness.machine import Machine, blank_disk
+from harness.machine.machine import Machine, blank_disk
 
 BLOCK = 1024
 

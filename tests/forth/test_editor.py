@@ -8,7 +8,7 @@ import subprocess
 
 import pytest
 
-from harness.machine import Machine, blank_disk
+from harness.machine.machine import Machine, blank_disk
 
 SESSION = [
     ("0 P ( squares and cubes )", "( squares and cubes )"),

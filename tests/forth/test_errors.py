@@ -83,7 +83,7 @@ def test_control_c_stops_a_runaway_loop(forth):
 def test_trapping_interrupt_handler_is_taken_out(forth):
     """A clock handler that traps (bus error) is reported once, and its vector
     goes back to the default handler instead of trapping at every tick."""
-    from harness.machine import ERROR
+    from harness.machine.machine import ERROR
     forth.send("CODE BADINT 160000O @# TST, RTI, END-CODE")
     forth.send(": LKS-ON 100O 177546O ! ;  : CLOCK-ON ['] LKS-ON CATCH DROP ;")
     forth.send("CLOCK-ON")  # the stock clock is always on

@@ -256,6 +256,13 @@ def test_search_coexists_with_forth79_vocabularies(forth):
     assert "undefined word: MOV," in forth.reply("MOV,").error
     assert forth.send(": M1 ASSEMBLER R0 R1 MOV, FORTH ; ' M1 DROP 1 .") == "1 "
     assert forth.send("FORTH GET-ORDER . = .") == "2 -1 "
+    # after ONLY, a vocabulary other than FORTH still chains to FORTH (FORTH-79)
+    assert forth.send("ONLY ASSEMBLER GET-ORDER . ' ASSEMBLER >BODY = . FORTH-WORDLIST = . "
+                      "FORTH GET-ORDER . 2DROP") == "2 -1 -1 2 "
+    assert forth.send("ONLY FORTH GET-ORDER . FORTH-WORDLIST = .") == "1 -1 "
+    assert forth.send("ONLY FORTH DEFINITIONS 1 .") == "1 "
+    assert forth.send(": M2 ASSEMBLER R0 R1 MOV, ( a comment ) FORTH ; 2 .") == "2 "
+    forth.send("ONLY FORTH ALSO DEFINITIONS")
 
 
 # ---- FACILITY -----------------------------------------------------------------

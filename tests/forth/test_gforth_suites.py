@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from harness.machine import Machine
+from harness.machine.machine import Machine
 from tests.forth.suite import SuiteResult, assert_passed, feed, load_tester, totals
 
 SUITES = Path("/usr/share/gforth/0.7.3/test")

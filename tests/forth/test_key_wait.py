@@ -1,12 +1,12 @@
 """KEY's wait (forth/kernel/prims.fs): it WAITs for the receive interrupt with the
 ring empty, and polls the DL11 itself while the priority masks that interrupt, so
 `Disable.Interrupts` typed at the terminal (block 1008) leaves the console usable.
-Lines here arrive through the DL11 (harness/machine.py types into the pty)."""
+Lines here arrive through the DL11 (harness/machine/machine.py types into the pty)."""
 import shutil
 
 import pytest
 
-from harness.machine import KERNEL, SIMULATOR, Machine
+from harness.machine.machine import KERNEL, SIMULATOR, Machine
 
 DISK = KERNEL.parent / "robot.dsk"
 

@@ -117,7 +117,7 @@ def test_priority_zero_after_boot(forth):
 
 def test_typed_ahead_lines_are_kept(forth):
     """Receive is interrupt-driven: lines typed while a word runs are buffered."""
-    from harness.machine import OK
+    from harness.machine.machine import OK
     forth.send(": BUSY 30000 0 DO LOOP ;")
     forth.child.send("BUSY\r1 2 + .\r3 4 + .\r")
     replies = []
@@ -153,7 +153,7 @@ def test_code_words_with_the_resident_assembler(forth):
 def test_harness_reports_a_halt():
     """A HALT reaches the simulator prompt: the harness says so, not a timeout."""
     import pytest
-    from harness.machine import Machine, MachineHalted
+    from harness.machine.machine import Machine, MachineHalted
     with Machine() as m:
         with pytest.raises(MachineHalted):
             m.send("CODE STOP HALT, END-CODE STOP")

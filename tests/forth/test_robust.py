@@ -3,7 +3,7 @@ ends in a FORTH error naming what and which word, then the prompt, with the
 stacks reset and the dictionary intact."""
 import pytest
 
-from harness.machine import ERROR
+from harness.machine.machine import ERROR
 
 
 def still_works(forth):

@@ -8,7 +8,7 @@ import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from harness import simh  # noqa: E402
+from harness.machine import simh  # noqa: E402
 from servo_program import servo_program, trace_script  # noqa: E402
 
 

@@ -11,7 +11,7 @@ R2 and R3 only (the delay loops use R0 and R1), so it saves nothing.
 Branch words were worked out by hand; tests/harness/test_servo_program.py checks
 every word against SIMH's disassembler.
 """
-from harness.pdp11prog import Program
+from harness.analysis.pdp11prog import Program
 
 TARGET, VEL, INC, MAXVEL, ZERO, RANGE = (0o2000 + 2 * i for i in range(6))
 LKS, DRV_OUT, DRV_IN, DAC_X = 0o177546, 0o167772, 0o167774, 0o170440

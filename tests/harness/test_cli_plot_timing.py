@@ -7,7 +7,7 @@ import sys
 import pytest
 
 from harness.cli import main
-from harness.simh import ROOT
+from harness.machine.simh import ROOT
 from timing_programs import counting_handler
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
@@ -110,7 +110,7 @@ def test_timing_bad_input(tmp_path, capsys, args, status, message):
 
 def test_plot_a_trace_of_dac_writes_only(tmp_path, capsys):
     """SET PLANT SAMPLE=0: rows only at DAC writes, here x's alone."""
-    from harness import simh
+    from harness.machine import simh
     from servo_program import servo_program, trace_script
     path = tmp_path / "writes.csv"
     simh.run(trace_script(servo_program(), path, extra="set plant sample=0\n"))

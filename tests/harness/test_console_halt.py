@@ -1,8 +1,8 @@
-"""The console's hint when the PDP-11 stops by itself (harness/console_halt.py)."""
+"""The console's hint when the PDP-11 stops by itself (harness/machine/console_halt.py)."""
 import pexpect
 
-from harness.console_halt import HaltWatcher, kernel_entry
-from harness.machine import KERNEL, MACHINE_INI, SIMULATOR
+from harness.machine.console_halt import HaltWatcher, kernel_entry
+from harness.machine.machine import KERNEL, MACHINE_INI, SIMULATOR
 
 
 def test_a_halt_gets_a_hint_in_pieces():

@@ -2,7 +2,7 @@
 the table's structure (basic + source + destination)."""
 import pytest
 
-from harness.kdf11 import price
+from harness.analysis.kdf11 import price
 
 
 @pytest.mark.parametrize("word, name, us", [

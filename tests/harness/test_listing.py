@@ -5,7 +5,7 @@ import sys
 
 import pytest
 
-from harness.listing import make_listing
+from harness.analysis.listing import make_listing
 from tests.conftest import ROOT
 
 

@@ -5,9 +5,9 @@ small made-up series."""
 import numpy as np
 import pytest
 
-from harness import moves as mv
-from harness import trace
-from harness.trace import AxisSeries
+from harness.analysis import moves as mv
+from harness.analysis import trace
+from harness.analysis.trace import AxisSeries
 from servo_program import LONG_TARGET, SETTINGS, SHORT_TARGET
 
 
@@ -106,7 +106,7 @@ def test_short_segments_are_not_moves():
 def test_no_ramp_puts_d1_on_the_first_tick(tmp_path):
     """Like block 1006 as printed: the velocity jumps to MaxVel at once (the hand
     servo with INC = MAXVEL), so D1 is where the move starts."""
-    from harness import simh
+    from harness.machine import simh
     from servo_program import servo_program, trace_script
     path = tmp_path / "jump.csv"
     simh.run(trace_script(servo_program(inc=300, adapt_steps=0), path))

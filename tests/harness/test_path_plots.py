@@ -3,8 +3,8 @@ answers are known, and the plot command's xy and gripper figures."""
 import numpy as np
 import pytest
 
-from harness import path_metrics as pm
-from harness import trace
+from harness.analysis import path_metrics as pm
+from harness.analysis import trace
 from harness.cli import main
 
 CORNERS = [(0, 0), (100, 0), (100, 100)]

@@ -1,6 +1,6 @@
 """The hand-assembled programs of the harness tests, word by word against SIMH's
 disassembler (a wrong branch offset cannot pass unnoticed)."""
-from harness.pdp11prog import check_listing
+from harness.analysis.pdp11prog import check_listing
 from servo_program import servo_program
 from timing_programs import call_program, counting_handler
 

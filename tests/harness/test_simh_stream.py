@@ -1,7 +1,7 @@
 """simh.stream: the simulator's output line by line, as simh.run gives it whole."""
 import pytest
 
-from harness import simh
+from harness.machine import simh
 
 
 def test_stream_gives_the_same_output_as_run():

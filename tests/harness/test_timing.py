@@ -2,9 +2,9 @@
 whose cost is worked out here by hand from shared/kdf11-timing.md (MMU off)."""
 import pytest
 
-from harness import kdf11, timing
-from harness.pdp11prog import Program
-from harness.timing import TimingError, parse_history_line, price_spans
+from harness.analysis import kdf11, timing
+from harness.analysis.pdp11prog import Program
+from harness.analysis.timing import TimingError, parse_history_line, price_spans
 from servo_program import servo_program
 from timing_programs import CALL_US, HANDLER_US, call_program, counting_handler
 

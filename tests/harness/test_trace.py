@@ -2,8 +2,8 @@
 import numpy as np
 import pytest
 
-from harness import trace
-from harness.trace import HEADER, TraceError
+from harness.analysis import trace
+from harness.analysis.trace import HEADER, TraceError
 
 GOOD_ROW = "0.016666667,X,2148,1894.410,1070.820,10.144,10"
 

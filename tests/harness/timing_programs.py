@@ -1,6 +1,6 @@
 """Hand-assembled programs for the timing tests, with their cost worked out by
 hand from shared/kdf11-timing.md (memory management off)."""
-from harness.pdp11prog import Program
+from harness.analysis.pdp11prog import Program
 from servo_program import LKS
 
 

@@ -7,8 +7,8 @@ import time
 
 import pytest
 
-from harness import simh
-from harness.console_session import KERNEL
+from harness.machine import simh
+from harness.machine.console_session import KERNEL
 
 PRISTINE = simh.ROOT / "build" / "robot.dsk"
 TYPED = "1000 LOAD\rSet.Up.Robot\r800 800 400 0 Abs.Move\r"

@@ -1,11 +1,11 @@
 """Fixtures for the robot tests: the appendix blocks loaded on build/pdp11,
-driven in lock-step with simulated time (harness/robot.py)."""
+driven in lock-step with simulated time (harness/machine/robot.py)."""
 import shutil
 
 import pytest
 
-from harness.machine import KERNEL, SIMULATOR
-from harness.robot import MAP, Robot
+from harness.machine.machine import KERNEL, SIMULATOR
+from harness.machine.robot import MAP, Robot
 
 DISK = KERNEL.parent / "robot.dsk"
 # Helpers typed at the prompt (not in the blocks): print the four counters,

@@ -12,9 +12,10 @@ from pathlib import Path
 
 import pytest
 
-from harness import moves, servo_runs, trace
-from harness.robot import numbers
-from harness.tick_view import open_view
+from harness.analysis import moves, trace
+from harness.analysis.tick_view import open_view
+from harness.bench import servo_runs
+from harness.machine.robot import numbers
 
 ROOT = Path(__file__).resolve().parents[2]
 

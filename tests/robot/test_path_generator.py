@@ -16,7 +16,7 @@ import shutil
 import numpy as np
 import pytest
 
-from harness.robot import Robot
+from harness.machine.robot import Robot
 
 from continuation import SQUARE, circle, paul_phases, paul_position, spline_points, vias
 

@@ -1,7 +1,7 @@
 """Blocks 1040-1053 driving the robot through the printed servo (blocks
 1000-1012) and through the proposed corrected one (block 1030): a 4-inch
 square at 2400 counts/s, traced by the plant, measured against its commanded
-segments (harness/path_metrics.py). Measured in the runs of docs/continuation.md
+segments (harness/analysis/path_metrics.py). Measured in the runs of docs/continuation.md
 (these sessions differ from them only in the tick phase):
 
 - printed servo: the path follows the segments with the printed servo's
@@ -14,10 +14,10 @@ segments (harness/path_metrics.py). Measured in the runs of docs/continuation.md
   2400 counts/s with Blend 6 it strays 259 counts from the first segments;
   with Blend 24 every segment is within 33 counts (and the segments, shorter
   than two blends, are slowed)."""
-from harness import path_metrics as pm
-from harness import trace as tr
+from harness.analysis import path_metrics as pm
+from harness.analysis import trace as tr
 
-from harness.continuation_runs import run_path
+from harness.bench.continuation_runs import run_path
 
 from continuation import PLANE, SQUARE, circle, load
 

@@ -14,7 +14,7 @@ targets; t (MaxVel 0, never position-servoed) swings -190..+147 counts.
 Which entry ends where depends on the hunting's phase (any change of the
 kernel's timing moves it), so the bounds below are the phase-independent ones.
 """
-from harness.robot import numbers
+from harness.machine.robot import numbers
 
 TARGET = (1600, 800, 400)
 

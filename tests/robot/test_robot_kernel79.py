@@ -1,7 +1,7 @@
 """The kernel behaviours blocks 1000-1012 rely on (blocks/KERNEL-WORDS.md),
 checked on the machine: FORTH-79's state-smart tick, CODE and ;CODE with the
 resident assembler, a CODE word ended by the next defining word."""
-from harness.robot import numbers
+from harness.machine.robot import numbers
 
 
 def test_tick_is_state_smart(boot):

@@ -3,9 +3,9 @@ Set.Up.Robot installs Interrupt.Servo at vector 100 with PSW 340."""
 import re
 from pathlib import Path
 
-from harness.trace import read
+from harness.analysis.trace import read
 
-from harness.robot import numbers
+from harness.machine.robot import numbers
 
 BLOCKS = Path(__file__).resolve().parents[2] / "blocks"
 DEFINING = re.compile(r"(?:^|\s)(?::|CODE|ARRAY|CON|VAR)\s+(\S+)")

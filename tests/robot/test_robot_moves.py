@@ -1,5 +1,5 @@
 """Moves on x, y, z with the blocks as printed, on the plant of DESIGN.md
-section 3 (never tuned). Measured first (deterministic runs: harness/robot.py),
+section 3 (never tuned). Measured first (deterministic runs: harness/machine/robot.py),
 then pinned with bounds a little wider than the measurement.
 
 What the measurement showed, and why (blocks 1003-1007):
@@ -17,7 +17,7 @@ What the measurement showed, and why (blocks 1003-1007):
 """
 import csv
 
-from harness.robot import numbers
+from harness.machine.robot import numbers
 
 RANGE = 5
 # (x, y, z) absolute targets in turn; t stays 0 (MaxVel 0). z moves upward

@@ -1,5 +1,5 @@
 """Every word of blocks 1009-1012, exercised on the machine."""
-from harness.robot import numbers
+from harness.machine.robot import numbers
 
 
 # (line, array printed after it, its four cells)

@@ -8,7 +8,7 @@ import sys
 import pexpect
 import pytest
 
-from harness.console_session import probe_prompt
+from harness.machine.console_session import probe_prompt
 from tests.run.common import PRISTINE, ROOT, failing_fsync_library, needs_build
 
 pytestmark = needs_build

@@ -1,14 +1,14 @@
-"""The console's watcher (harness/console_watch.py), SIMH's command lookup
-(harness/simh_command.py), the buffer tables (harness/block_buffers.py) and the
+"""The console's watcher (harness/machine/console_watch.py), SIMH's command lookup
+(harness/machine/simh_command.py), the buffer tables (harness/machine/block_buffers.py) and the
 report of leaving (harness/console_session.Departure), as pure logic."""
 from pathlib import Path
 
 import pytest
 
-from harness import block_buffers
-from harness.console_session import Departure
-from harness.console_watch import Leave, LineWatcher
-from harness.simh_command import simh_command
+from harness.machine import block_buffers
+from harness.machine.console_session import Departure
+from harness.machine.console_watch import Leave, LineWatcher
+from harness.machine.simh_command import simh_command
 
 
 @pytest.mark.parametrize("line,command", [("q", "QUIT"), ("quit", "QUIT"), ("EXI", "EXIT"),

@@ -1,7 +1,7 @@
 """The console script format: FORTH lines, comments, directives, bad lines."""
 import pytest
 
-from harness.script import ScriptSyntaxError, Step, parse, read
+from harness.machine.script import ScriptSyntaxError, Step, parse, read
 
 
 def test_lines_comments_and_directives():

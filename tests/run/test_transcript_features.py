@@ -2,8 +2,8 @@
 exchanges, and expected trace features (read, check, update)."""
 import pytest
 
-from harness.script_run import Transcript
-from harness.trace_features import FeatureError, check, read_expected, update_expected
+from harness.analysis.trace_features import FeatureError, check, read_expected, update_expected
+from harness.machine.script_run import Transcript
 
 
 def test_a_late_lf_after_a_simh_exchange_is_not_doubled():

@@ -1,0 +1,117 @@
+"""`make bench-harness`: how fast scripted runs and the test suite are on this host.
+
+Prints the wall time of one scenario including the boot, in process and from
+the command line (`python -m harness regress boot`, goal <= 0.25 s; best of
+five), of the whole regression suite (goal <= 60 s), the real-time factor
+(simulated seconds per wall second for a run that is mostly #wait), the share
+of a core the console's simulator takes idle at the prompt with --fast, and
+the wall time of the whole pytest suite as make test runs it (goal <= 30 s).
+"""
+import os
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+import pexpect
+
+from harness.commands import regression
+from harness.machine.script import parse
+from harness.machine.script_run import run_steps
+from harness.machine.scripted_machine import ScriptedMachine
+
+IDLE_SECONDS = 20.0
+
+
+def timed(function):
+    start = time.perf_counter()
+    result = function()
+    return time.perf_counter() - start, result
+
+
+def one_scenario(name="boot"):
+    scenario = regression.Scenario(regression.SCENARIOS / f"{name}.script")
+    with tempfile.TemporaryDirectory() as tmp:
+        return timed(lambda: regression.run(scenario, tmp))[0]
+
+
+def whole_suite():
+    with tempfile.TemporaryDirectory() as tmp:
+        wall, _ = timed(lambda: [regression.run(s, tmp) for s in regression.scenarios()
+                                 if not regression.skip_reason(s)])
+    ran = sum(1 for s in regression.scenarios() if not regression.skip_reason(s))
+    return wall, ran, len(regression.scenarios())
+
+
+def real_time_factor():
+    with tempfile.TemporaryDirectory() as tmp:
+        disk = Path(tmp) / "robot.dsk"
+        disk.write_bytes(regression.ROOT.joinpath("build", "robot.dsk").read_bytes())
+        with ScriptedMachine("robot.dsk", cwd=tmp) as m:
+            wall, _ = timed(lambda: run_steps(m, parse(f"#wait {IDLE_SECONDS}")))
+    return IDLE_SECONDS / wall
+
+
+def command_line_scenario(tries=5):
+    command = [sys.executable, "-m", "harness", "regress", "boot"]
+    return min(timed(lambda: subprocess.run(command, cwd=regression.ROOT, check=True,
+                                            capture_output=True))[0] for _ in range(tries))
+
+
+def cpu_seconds(pid):
+    fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+    return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+
+
+def idle_console_share(seconds=3.0, line=None):
+    """Share of a core build/pdp11 uses at the FORTH prompt, as `console --fast` runs
+    it, after `line` (e.g. the blocks loaded and the servo running) if given."""
+    from harness.machine.console_session import boot_script
+    with tempfile.TemporaryDirectory() as tmp:
+        disk = Path(tmp) / "robot.dsk"
+        disk.write_bytes(regression.ROOT.joinpath("build", "robot.dsk").read_bytes())
+        ini = Path(tmp) / "console.ini"
+        ini.write_text(boot_script(disk, fast=True))
+        child = pexpect.spawn(str(regression.ROOT / "build" / "pdp11"), [str(ini)],
+                              timeout=30)
+        try:
+            child.expect(b" ok\r\n")
+            if line:
+                child.send(line.encode() + b"\r")
+                child.expect(b" ok\r\n")
+            time.sleep(0.5)
+            before, start = cpu_seconds(child.pid), time.perf_counter()
+            time.sleep(seconds)
+            return (cpu_seconds(child.pid) - before) / (time.perf_counter() - start)
+        finally:
+            child.close(force=True)
+
+
+def test_suite():
+    command = ["make", "--no-print-directory", "test"]
+    env = {k: v for k, v in os.environ.items() if k not in ("MAKEFLAGS", "MFLAGS")}
+    return timed(lambda: subprocess.run(command, cwd=regression.ROOT, env=env,
+                                        capture_output=True))
+
+
+def main():
+    print("harness scripted runs (wall clock on this host):")
+    print(f"  one scenario with boot (boot.script):  {one_scenario():6.3f} s   (goal <= 1 s)")
+    print(f"  the same from the command line (regress boot, best of 5): "
+          f"{command_line_scenario():6.3f} s   (goal <= 0.25 s)")
+    wall, ran, total = whole_suite()
+    print(f"  regression suite, {ran} of {total} scenarios runnable: {wall:6.3f} s   "
+          "(goal <= 60 s)")
+    print(f"  real-time factor (the FORTH idle at its prompt for {IDLE_SECONDS:g} "
+          f"simulated s, no trace): {real_time_factor():6.1f} x")
+    print(f"  console --fast idle at the prompt: {100 * idle_console_share():5.1f} % of a core; "
+          f"with the servo running: "
+          f"{100 * idle_console_share(line='1000 LOAD Set.Up.Robot'):5.1f} %")
+    wall, done = test_suite()
+    print(f"  make test (pytest -n auto): {wall:6.1f} s, exit status {done.returncode}   "
+          "(goal <= 30 s)")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,243 @@
+"""The interactive console: the user's terminal joined to the simulator's.
+
+The user types to the FORTH (or, after ^E, to SIMH's sim> prompt) directly;
+the harness watches the keystrokes only to catch the ways out
+(harness/machine/console_watch.py): BYE, ^D, the halt of the FORTH's BYE word, and at sim>
+^C or SIMH's QUIT/EXIT/BYE,
+which would otherwise end the simulator with the FORTH's UPDATEd blocks unwritten.
+Then it erases the typed line (^U, which both the FORTH and SIMH's prompt take as
+"kill line"), brings the FORTH back to its prompt if SIMH had it stopped, has it
+FLUSH its block buffers, checks at sim> that no UPDATEd block is left (listing the
+ones that are), detaches the trace and the disk, quits SIMH and says what happened.
+"""
+import os
+import re
+import sys
+import tempfile
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import pexpect
+
+from harness.blocks.disk import block_ranges
+from harness.machine import block_buffers, pty_child
+from harness.machine.console_halt import HaltWatcher, kernel_entry
+from harness.machine.console_watch import Leave, LineWatcher
+from harness.machine.scripted_machine import ScriptError, read_kernel_map
+from harness.machine.simh import MACHINE_INI
+
+KERNEL = Path(__file__).resolve().parents[2] / "build" / "kernel.lda"
+# the 11/23's pace (CLK RATE, 300K instructions/s) from the first instruction; SIMH's
+# SET THROTTLE cannot pace the kernel's WAIT (pdp11-devices/kw11l.c)
+REALTIME = "set clk realtime"
+# --fast: full speed while the FORTH works; while KEY WAITs the KW11-L sleeps the
+# host at the 11/23's pace (pdp11-devices/kw11l.c), so an idle prompt costs little
+IDLE = "set cpu idle"
+# The amplifier rack starts switched off, as the lab's operator left it: the axes
+# stand still (z's brake on) however long the blocks take to load or the user
+# waits; it is switched on once Set.Up.Robot's servo holds them (README).
+RACK_OFF = "set plant power=off"
+CTRL_C, CTRL_E, CTRL_U = b"\x03", b"\x05", b"\x15"
+BUSY_WAIT = 3                      # wall seconds a running word gets before ^C stops it
+FLUSH_WAIT = 60                    # wall seconds the FORTH gets to answer FLUSH
+HINT = ("Console: leave with BYE (or ^D; ^C or QUIT at sim> too): the FORTH FLUSHes its "
+        "blocks and the disk is detached. ^E gives SIMH's sim> prompt (SHOW PLANT, then "
+        "CONT to come back).")
+RACK_HINT = ("The amplifier rack starts OFF: the axes stand still. After Set.Up.Robot, "
+             "switch it on: ^E, then SET PLANT POWER=ON, then CONT.")
+SIMH_ERROR = re.compile(r"(Unit not attached|Non-existent[^\r\n]*|[A-Z][^\r\n]*error[^\r\n]*)")
+
+
+def boot_script(disk, trace=None, fast=False, kernel=KERNEL):
+    return (f"do {MACHINE_INI}\n"
+            + (IDLE if fast else REALTIME) + "\n"
+            + RACK_OFF + "\n"
+            + f"attach rl0 {Path(disk).resolve()}\n"
+            + (f"attach plant {Path(trace).resolve()}\n" if trace else "")
+            + f"load {kernel}\n"
+            "go\n")
+
+
+def say(*lines):
+    sys.stdout.write("\r\n" + "".join(f"[console] {line}\r\n" for line in lines))
+    sys.stdout.flush()
+
+
+def probe_prompt(child, tries=40):
+    """After CONT: SIMH discards what was typed before the machine runs
+    (TCSAFLUSH), so type an empty line until the FORTH answers it.
+    0 answered, 2 no answer, 3 the simulator exited. (A late answer to an
+    earlier empty line may come after this returns: _flush allows for it.)"""
+    ok = " ok\r\n" if child.encoding else b" ok\r\n"   # str or bytes, as the child reads
+    for _ in range(tries):
+        child.send("\r")
+        i = child.expect([ok, pexpect.TIMEOUT, pexpect.EOF], timeout=0.25)
+        if i != 1:
+            return 0 if i == 0 else 3
+    return 2
+
+
+@dataclass
+class Departure:
+    """What leaving did to the disk, for the report and the exit status."""
+    disk: Path
+    flush: str = "not sent"          # "ok", or what happened: "failed (Error: ...)", ...
+    unwritten: list = None           # UPDATEd blocks left in the buffers (None: unknown)
+    detach: str = "not tried"        # "ok" or why not
+    notes: list = field(default_factory=list)
+
+    @property
+    def safe(self):
+        return self.flush == "ok" and self.unwritten == [] and self.detach == "ok"
+
+    def report(self):
+        if self.flush == "ok" and self.unwritten == []:
+            lines = [f"FLUSH answered ok: every UPDATEd block is written to {self.disk} "
+                     "and synced to the host's disk."]
+        elif self.flush == "ok":
+            lines = ["FLUSH answered ok, " + ("yet the FORTH's buffers could not be read "
+                                              "back to confirm it." if self.unwritten is None
+                                              else "yet blocks are still UPDATEd:")]
+        else:
+            lines = [f"FLUSH {self.flush}." if self.flush != "not sent" else
+                     "FLUSH could not be sent (the FORTH never came back to its prompt)."]
+        if self.unwritten:
+            lines.append(f"NOT SAVED: block(s) {block_ranges(self.unwritten)}: UPDATEd, "
+                         "and FLUSH did not complete their write; the changes may be lost.")
+        elif self.unwritten is None and self.flush != "ok":
+            lines.append("Blocks UPDATEd since the last FLUSH may not be written "
+                         "(the FORTH's buffers could not be read).")
+        lines.append(f"Disk {self.disk} detached." if self.detach == "ok" else
+                     f"Disk {self.disk} not detached: {self.detach}.")
+        return self.notes + lines
+
+
+def bye_halt(kernel=KERNEL):
+    """What SIMH prints when the kernel's BYE word halts at (BYE), or None."""
+    try:
+        bye = read_kernel_map(Path(kernel).with_suffix(".map")).get("(BYE)")
+    except ScriptError:
+        return None
+    return None if bye is None else b"HALT instruction, PC: %06o" % (bye + 2)
+
+
+def _to_forth_prompt(child, gone, busy_wait):
+    """Bring the FORTH to its prompt; 0 at the prompt, 2 no answer, 3 exited."""
+    child.send(CTRL_U + b"\r")                   # an empty line: who answers?
+    i = child.expect([b" ok\r\n", b"sim> ", pexpect.TIMEOUT, pexpect.EOF,
+                      b" compiled\r\n"], timeout=busy_wait)
+    if i == 1:                                   # SIMH had the machine stopped
+        child.send(b"cont\r")
+        return probe_prompt(child)
+    if i == 4:                                   # FLUSH typed now would be compiled
+        gone.notes.append("A definition was still open: ^C discarded it so that "
+                          "FLUSH could run.")
+        child.send(CTRL_C)
+        return probe_prompt(child)
+    if i == 2:                                   # a word is running: stop it as a user would
+        gone.notes.append(f"The FORTH was busy for {busy_wait:g} s: ^C stopped the "
+                          "running word so that FLUSH could run.")
+        child.send(CTRL_C)
+        return probe_prompt(child)
+    return i
+
+
+def _flush(child):
+    """FLUSH's answer. Empty lines typed to find the prompt may still be answered
+    after it is sent, so the answer counted is the one after FLUSH's own echo."""
+    child.send(b"FLUSH\r")
+    answers = [b" ok\r\n", rb"(Error: [^\r]*)\r\n", pexpect.TIMEOUT, pexpect.EOF]
+    i = child.expect([b"FLUSH"] + answers[2:], timeout=FLUSH_WAIT)
+    if i == 0:
+        i = child.expect(answers, timeout=FLUSH_WAIT)
+    else:
+        i += 1
+    if i == 1:
+        return f"failed ({child.match.group(1).decode('latin-1')})"
+    return {0: "ok", 2: f"was not answered within {FLUSH_WAIT} s (the FORTH is busy)",
+            3: "was cut short: the simulator exited"}[i]
+
+
+def _simh(child, command):
+    child.send(command.encode() + b"\r")
+    child.expect(b"sim> ", timeout=15)
+    return child.before.decode("latin-1")
+
+
+def _unwritten(child, kernel):
+    try:
+        symbols = read_kernel_map(Path(kernel).with_suffix(".map"))
+    except ScriptError:
+        return None
+    return block_buffers.read_unwritten(symbols, lambda command: _simh(child, command))
+
+
+def _detach(child, unit):
+    """"ok", or why the unit was not detached (SIMH detaches an unattached unit
+    silently, so SHOW says first whether there is anything to detach)."""
+    if "not attached" in _simh(child, f"show {unit}"):
+        return "it was not attached (a DETACH at sim>, or an ATTACH that failed)"
+    found = SIMH_ERROR.search(_simh(child, f"detach {unit}"))
+    return found.group(1) if found else "ok"
+
+
+def leave(child, disk, trace, kernel=KERNEL, busy_wait=BUSY_WAIT, devices=(), echo=None):
+    """Flush the FORTH's blocks, check, detach (the trace, then `devices`, then
+    the disk), quit; the Departure. What the FORTH prints meanwhile goes to
+    `echo` (a binary file; default stdout)."""
+    gone = Departure(Path(disk))
+    child.logfile_read = echo or sys.stdout.buffer   # the user sees what happens
+    try:
+        if _to_forth_prompt(child, gone, busy_wait) == 0:
+            gone.flush = _flush(child)
+        child.logfile_read = None                # the checks below are the harness's own
+        if not child.isalive():
+            gone.detach = "the simulator had exited (SIMH closed the image itself)"
+            return gone
+        child.send(CTRL_E)
+        child.expect(b"sim> ", timeout=15)
+        gone.unwritten = _unwritten(child, kernel)
+        for unit in (("plant",) if trace else ()) + tuple(devices):
+            _detach(child, unit)
+        gone.detach = _detach(child, "rl0")
+        child.send(b"quit\r")
+        child.expect(pexpect.EOF, timeout=15)
+    except (pexpect.TIMEOUT, pexpect.EOF) as err:
+        gone.notes.append(f"the simulator stopped answering while leaving "
+                          f"({type(err).__name__})")
+        if gone.detach == "not tried":
+            gone.detach = "the simulator stopped answering"
+    return gone
+
+
+def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BUSY_WAIT):
+    """Run the console until the user leaves; the exit status (0: all written)."""
+    with tempfile.TemporaryDirectory(prefix="console-") as tmp:
+        ini = Path(tmp) / "console.ini"
+        ini.write_text(boot_script(disk, trace, fast, kernel))
+        pace = "full speed" if fast else "real-time pace (300K instructions/s)"
+        print(f"[console] booting the FORTH on the PDP-11/23, {pace}, disk {disk}")
+        print(f"[console] {HINT}")
+        print(f"[console] {RACK_HINT}")
+        sys.stdout.flush()
+        size = os.get_terminal_size() if sys.stdout.isatty() else os.terminal_size((80, 24))
+        child = pexpect.spawn(str(simulator), [str(ini)], timeout=None,
+                              dimensions=(size.lines, size.columns))
+        child.delaybeforesend = None
+        watcher = LineWatcher(bye_halt(kernel))
+        try:
+            halts = HaltWatcher(kernel, kernel_entry(Path(kernel).with_suffix(".map")) or 0)
+            child.interact(escape_character=None, input_filter=watcher.feed,
+                           output_filter=lambda data: halts.feed(watcher.output(data)))
+        except Leave as way:
+            if way.how != "BYE":
+                say(f"{way.how}: leaving; the FORTH FLUSHes its blocks first")
+            child.send(way.typed)                # typed ahead of the way out
+            gone = leave(child, disk, trace, kernel, busy_wait)
+            say(*gone.report(), "Bye.")
+            return 0 if gone.safe else 1
+        finally:
+            pty_child.close(child)
+        say("the simulator exited on its own: blocks UPDATEd since the last FLUSH, if "
+            f"any, were not written to {disk}")
+        return 1

@@ -1,0 +1,155 @@
+"""Drive the emulated PDP-11/23 running the FORTH kernel, through a pty.
+
+    with Machine(disk=path) as m:      # boots to the FORTH prompt
+        m.send("1 2 + .")              # -> "3 "   (raises ForthError on an error)
+        m.reply("1 @")                 # -> Reply(ok=False, output=..., error=...)
+
+Flow control: a line is sent only after the previous one was answered (" ok",
+" compiled" while a definition is open, or "Error: ..."), and the answer is
+awaited with pexpect (no sleeps). A simulator halt (the sim> prompt) or EOF raises MachineHalted; a missing answer raises
+TimeoutError. The simulator binary is one setting: SIMULATOR below, or the
+environment variable PDP11_SIM (make passes it from its PDP11_SIM variable).
+"""
+import os
+import re
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+
+import pexpect
+
+from harness.blocks.disk import RL02_BYTES
+from harness.machine import pty_child
+
+ROOT = Path(__file__).resolve().parents[2]
+SIMULATOR = ROOT / os.environ.get("PDP11_SIM", "build/pdp11")
+KERNEL = ROOT / "build" / "kernel.lda"
+MACHINE_INI = ROOT / "pdp11-devices" / "machine.ini"
+
+OK = re.compile(r" (?:ok|compiled)\r\n")   # compiled: a definition or structure is open
+ERROR = re.compile(r"\r\nError: ([^\r\n]*)\r\n")
+SIM_PROMPT = re.compile(r"sim> ")
+
+
+class MachineHalted(RuntimeError):
+    """The simulator stopped (HALT, trap to the simulator prompt, EOF)."""
+
+
+class ForthError(RuntimeError):
+    """The FORTH answered a line with an error report."""
+
+    def __init__(self, line, message, output):
+        super().__init__(f"{line!r}: {message}")
+        self.line, self.message, self.output = line, message, output
+
+
+@dataclass
+class Reply:
+    ok: bool
+    output: str        # what the line printed, without its echo and " ok"
+    error: str = ""    # the error message ("" when ok)
+
+
+def blank_disk(path):
+    """A fresh RL02-size image of zeros (block n = bytes 1024n..1024n+1023)."""
+    path = Path(path)
+    with open(path, "wb") as f:
+        f.truncate(RL02_BYTES)
+    return path
+
+
+def boot_script(disk, kernel=KERNEL, machine_ini=MACHINE_INI):
+    """SIMH commands: the machine, the disk, the kernel, start."""
+    return (f"do {machine_ini}\n"
+            f"attach rl0 {disk}\n"
+            f"load {kernel}\n"
+            "go\n")
+
+
+class Machine:
+    def __init__(self, disk=None, simulator=SIMULATOR, kernel=KERNEL, timeout=30,
+                 extra_commands=""):
+        self.timeout = timeout
+        self._tmp = tempfile.TemporaryDirectory(prefix="forth-machine-")
+        tmp = Path(self._tmp.name)
+        self.disk = Path(disk) if disk else blank_disk(tmp / "rl0.dsk")
+        ini = tmp / "boot.ini"
+        script = boot_script(self.disk, kernel)
+        if extra_commands:
+            script = script.replace("go\n", extra_commands + "go\n")
+        ini.write_text(script)
+        self.child = pexpect.spawn(str(simulator), [str(ini)], cwd=str(ROOT),
+                                   encoding="latin-1", timeout=timeout,
+                                   dimensions=(24, 200))
+        self.child.delaybeforesend = None  # pexpect would wait 50 ms per send
+        self.at_sim_prompt = False
+        try:
+            self.banner = self._expect_ok_or_halt("boot")
+        except Exception:
+            self.close()
+            raise
+
+    # ---- low level -------------------------------------------------------------
+    def _expect_ok_or_halt(self, what):
+        i = self.child.expect([OK, SIM_PROMPT, pexpect.EOF, pexpect.TIMEOUT])
+        if i == 0:
+            return self.child.before
+        self._stopped(what, timed_out=(i == 3))
+
+    def _stopped(self, what, timed_out):
+        self.at_sim_prompt = not timed_out
+        text = self.child.before if isinstance(self.child.before, str) else ""
+        if timed_out:
+            raise TimeoutError(f"no answer to {what!r} within {self.timeout} s: {text[-500:]!r}")
+        raise MachineHalted(f"simulator stopped during {what!r}: {text[-500:]!r}")
+
+    # ---- lines -------------------------------------------------------------------
+    def reply(self, line, timeout=None):
+        """Send one line (CR-terminated); wait for " ok" or an error report."""
+        if "\r" in line or "\n" in line:
+            raise ValueError("one line at a time")
+        self.child.send(line + "\r")
+        i = self.child.expect([OK, ERROR, SIM_PROMPT, pexpect.EOF, pexpect.TIMEOUT],
+                              timeout=timeout or self.timeout)
+        text = self.child.before
+        echo = line.replace("\t", " ")  # the FORTH reads a tab as a blank
+        if text.startswith(echo):
+            text = text[len(echo):]
+        if text.startswith(" "):
+            text = text[1:]
+        if i == 0:
+            return Reply(True, text)
+        if i == 1:
+            return Reply(False, text, self.child.match.group(1))
+        self._stopped(line, timed_out=(i == 4))
+
+    def send(self, line, timeout=None):
+        """Send one line; its output, or ForthError if it failed."""
+        r = self.reply(line, timeout)
+        if not r.ok:
+            raise ForthError(line, r.error, r.output)
+        return r.output
+
+    def send_lines(self, text, timeout=None):
+        """Send several lines; their outputs concatenated."""
+        return "".join(self.send(line, timeout) for line in text.splitlines())
+
+    # ---- shutdown -----------------------------------------------------------------
+    def close(self):
+        if self.child.isalive():
+            try:
+                if not self.at_sim_prompt:
+                    self.child.sendcontrol("e")
+                    self.child.expect(SIM_PROMPT, timeout=5)
+                self.child.sendline("quit")
+                self.child.expect(pexpect.EOF, timeout=5)
+            except (pexpect.TIMEOUT, pexpect.EOF, OSError):
+                pass
+            pty_child.close(self.child)
+        self._tmp.cleanup()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()

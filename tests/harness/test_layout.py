@@ -1,0 +1,162 @@
+"""harness/'s packages import one way (harness/README.md): each package only from
+packages below it, never sideways or up; no module imports itself round a circle;
+every name imported from a harness module exists there. Read from the source with
+ast (imports inside functions included), nothing imported."""
+import ast
+from pathlib import Path
+
+HARNESS = Path(__file__).resolve().parents[2] / "harness"
+
+# the import order, bottom first; a package may import only packages of a lower rank
+RANK = {"blocks": 0, "machine": 1, "analysis": 2, "lab": 2, "asmcheck": 2,
+        "commands": 3, "bench": 4, "cli": 4, "__main__": 5}
+
+
+def module_name(path):
+    parts = path.relative_to(HARNESS.parent).with_suffix("").parts
+    return ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
+
+
+def modules():
+    return {module_name(p): p for p in sorted(HARNESS.rglob("*.py"))}
+
+
+def imported(path, known):
+    """The harness modules (or packages) that the file at path imports."""
+    name = module_name(path)
+    package = name if path.name == "__init__.py" else name.rpartition(".")[0]
+    found = set()
+    for node in ast.walk(ast.parse(path.read_text(), str(path))):
+        if isinstance(node, ast.Import):
+            found |= {a.name for a in node.names}
+        elif isinstance(node, ast.ImportFrom):
+            base = node.module or ""
+            if node.level:
+                anchor = package.split(".")[:len(package.split(".")) - node.level + 1]
+                base = ".".join(anchor + ([base] if base else []))
+            found.add(base)
+            found |= {f"{base}.{a.name}" for a in node.names if f"{base}.{a.name}" in known}
+    return {m for m in found if m in known and m != name}
+
+
+def graph():
+    known = modules()
+    edges = {name: imported(path, known) for name, path in known.items()}
+    # cli imports each subcommand's module by name (importlib), unseen by ast
+    edges["harness.cli"] |= {m for m in known if m.startswith("harness.commands.")}
+    return edges
+
+
+def package_of(module):
+    parts = module.split(".")
+    return parts[1] if len(parts) > 1 else ""
+
+
+def test_every_module_sits_in_a_ranked_package():
+    loose = [m for m in modules() if m != "harness" and package_of(m) not in RANK]
+    assert not loose, (f"{loose}: put each in a package of harness/README.md's table "
+                       "(and RANK here) or add its package there")
+
+
+def against_order(edges):
+    """The imports of another package of the same or a higher rank."""
+    return [f"{m} imports {d}" for m, deps in edges.items() for d in deps
+            if package_of(d) and package_of(m) and package_of(d) != package_of(m)
+            and RANK[package_of(d)] >= RANK[package_of(m)]]
+
+
+def test_packages_import_only_downwards():
+    wrong = against_order(graph())
+    assert not wrong, "imports against the order of harness/README.md:\n" + "\n".join(wrong)
+
+
+def circle_through(edges):
+    """One import circle as a list of modules, or [] if there is none."""
+    state, stack = {}, []
+
+    def visit(m):
+        state[m] = "open"
+        stack.append(m)
+        for d in sorted(edges.get(m, ())):
+            if state.get(d) == "open":
+                return stack[stack.index(d):] + [d]
+            if d not in state and (found := visit(d)):
+                return found
+        state[m] = "done"
+        stack.pop()
+        return []
+
+    for m in sorted(edges):
+        if m not in state and (found := visit(m)):
+            return found
+    return []
+
+
+def test_no_module_imports_itself_round_a_circle():
+    circle = circle_through(graph())
+    assert not circle, "import circle: " + " -> ".join(circle)
+
+
+def top_level_names(tree):
+    """The names a module defines at its top level (if/try/with blocks included)."""
+    names, todo = set(), list(tree.body)
+    while todo:
+        node = todo.pop()
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+            names.add(node.name)
+        elif isinstance(node, (ast.Import, ast.ImportFrom)):
+            names |= {(a.asname or a.name).split(".")[0] for a in node.names}
+        elif isinstance(node, (ast.Assign, ast.AnnAssign, ast.AugAssign)):
+            targets = node.targets if isinstance(node, ast.Assign) else [node.target]
+            names |= {n.id for t in targets for n in ast.walk(t) if isinstance(n, ast.Name)}
+        for field in ("body", "orelse", "finalbody", "handlers"):
+            if not isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+                todo += getattr(node, field, [])
+    return names
+
+
+def missing_names(files):
+    """`from harness.X import name` in files where X defines no name and has no
+    submodule name."""
+    known = modules()
+    defined = {m: top_level_names(ast.parse(p.read_text())) for m, p in known.items()}
+    wrong = []
+    for path in files:
+        for node in ast.walk(ast.parse(path.read_text(), str(path))):
+            if isinstance(node, ast.ImportFrom) and not node.level and node.module in known:
+                wrong += [f"{path}:{node.lineno}: {node.module} has no {a.name}"
+                          for a in node.names if a.name not in defined[node.module]
+                          and f"{node.module}.{a.name}" not in known]
+    return wrong
+
+
+def test_every_name_imported_from_the_harness_exists():
+    """What a move can leave behind unseen until the module runs (make bench-continuation
+    imported setup_script from where it no longer was)."""
+    tests = Path(__file__).resolve().parents[1]
+    wrong = missing_names(sorted(HARNESS.rglob("*.py")) + sorted(tests.rglob("*.py")))
+    assert not wrong, "\n".join(wrong)
+
+
+def test_the_checks_see_a_circle_an_upward_import_and_a_stale_name(tmp_path):
+    """The checks themselves: a made-up circle is found, and the old one's shape
+    (cli -> commands.regress -> regression -> cli) would be; an import up or
+    sideways is named, one down is not; a name a module lacks is named."""
+    old = {"harness.cli": {"harness.commands.regress"},
+           "harness.commands.regress": {"harness.commands.regression"},
+           "harness.commands.regression": {"harness.cli"}}
+    assert circle_through(old) == ["harness.cli", "harness.commands.regress",
+                                   "harness.commands.regression", "harness.cli"]
+    assert against_order(old) == ["harness.commands.regression imports harness.cli"]
+    assert circle_through({"a": {"b"}, "b": set()}) == []
+    assert against_order({"harness.machine.robot": {"harness.commands.run"},
+                          "harness.lab.server": {"harness.analysis.trace"},
+                          "harness.commands.run": {"harness.machine.simh"}}) == [
+        "harness.machine.robot imports harness.commands.run",
+        "harness.lab.server imports harness.analysis.trace"]
+    edges = graph()
+    assert "harness.machine.simh" in edges["harness.machine.robot"]    # the parser sees imports
+    assert "harness.commands.run" in edges["harness.commands.regression"]
+    stale = tmp_path / "stale.py"
+    stale.write_text("from harness.machine.robot import Robot, no_such_name\n")
+    assert missing_names([stale]) == [f"{stale}:1: harness.machine.robot has no no_such_name"]
