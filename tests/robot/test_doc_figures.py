@@ -24,13 +24,24 @@ def doc(name):
     return (ROOT / name).read_text()
 
 
-def quoted(name, pattern):
-    """The number a doc quotes where `pattern` (a regex with one group) matches;
-    '16 474' reads as 16474."""
-    text = " ".join(doc(name).split())            # sentences wrap anywhere
+def sentence(name, pattern):
+    """What `pattern`'s one group matches in a doc (sentences wrap anywhere)."""
+    text = " ".join(doc(name).split())
     found = re.search(pattern, text)
     assert found, f"{name}: no sentence matching {pattern!r}: update this test with the doc"
-    return float(found.group(1).replace(" ", ""))
+    return found.group(1)
+
+
+def quoted(name, pattern):
+    """The number a doc quotes where `pattern` matches; '16 474' reads as 16474."""
+    return float(sentence(name, pattern).replace(" ", ""))
+
+
+def tick_view(tmp_path, **lines):
+    """`python -m harness tick`'s view (harness/analysis/tick_view.py) on a disk copy."""
+    disk = tmp_path / "robot.dsk"
+    shutil.copy(servo_runs.DISK, disk)
+    return open_view(disk, **lines)
 
 
 def test_free_bytes_and_load_time_as_documented(boot):
@@ -107,8 +118,22 @@ def test_servo_doc_tick_table(tmp_path):
     text = doc("docs/servo.md")
     block = re.search(r"```\n(tick \d+, t = .*?)\n```", text, re.S)
     assert block, "docs/servo.md: no `harness tick` table"
-    disk = tmp_path / "robot.dsk"
-    shutil.copy(servo_runs.DISK, disk)
-    robot, view = open_view(disk)
+    robot, view = tick_view(tmp_path)
     with robot:
         assert view.step().rstrip() == block.group(1)
+
+
+def test_exercise_hunting_codes(tmp_path):
+    """docs/exercises.md's answer 3 quotes x's DAC codes over one hunting period
+    as `python -m harness tick --ticks 16 --line "800 0 400 0 Abs.Move
+    Move.Complete?"` shows them."""
+    codes = [int(c) for c in sentence(
+        "docs/exercises.md", r"Four ticks on x after a 1-inch move \(([\d, ]+), \.\.\.\)").split(",")]
+    robot, view = tick_view(tmp_path, watch=("800 0 400 0 Abs.Move Move.Complete?",))
+    with robot:
+        shown = []
+        for _ in range(16):
+            view.step()
+            shown.append(robot.plant()["X"]["dac"])
+    assert any(shown[i:i + len(codes)] == codes for i in range(len(shown))), \
+        f"docs/exercises.md's codes {codes} are not in x's DAC column {shown}"
