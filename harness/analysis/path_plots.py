@@ -8,6 +8,7 @@ against its commanded segments, and the gripper against time.
 Built like harness/analysis/plots.py (matplotlib Figure, Agg); the numbers on the x-y
 figure come from harness/analysis/path_metrics.py.
 """
+import math
 from pathlib import Path
 
 from matplotlib.figure import Figure
@@ -30,15 +31,24 @@ def xy_figure(trace, corners, windows=()):
         raise PlotError(f"too few x-y samples in {_window_text(start, end)} "
                         "(the trace needs SAMPLE rows of all axes)")
     m = pm.measure(xy, corners)
-    fig = Figure(figsize=(WIDTH * 1.1, WIDTH), layout="constrained")
+    fig = Figure(figsize=(WIDTH * 1.35, WIDTH), layout="constrained")
     ax = fig.subplots()
     cx, cy = zip(*corners)
     ax.plot(cx, cy, label="commanded segments", **STYLE["given"])
     ax.plot(cx, cy, ls="none", marker="o", color="black", ms=4)
     ax.plot(xy.x, xy.y, label="traced path (counters)", color="tab:orange", lw=1.2)
+    # Each via point is numbered just outside the path; its figures stand in a
+    # column beside the axes, where no label can hide another or leave the figure.
+    mx, my = sum(cx[1:]) / (len(cx) - 1), sum(cy[1:]) / (len(cy) - 1)
+    rows = ["via  miss   speed", "     counts counts/s"]
     for k, (c, miss, v) in enumerate(zip(corners[1:], m.via_miss, m.via_speed)):
-        ax.annotate(f"via {k + 1}: {miss:.0f} c, {v:.0f} c/s", c, fontsize=7,
-                    xytext=(4, 4), textcoords="offset points", color="dimgrey")
+        dx, dy = c[0] - mx, c[1] - my
+        norm = math.hypot(dx, dy) or 1.0
+        ax.annotate(str(k + 1), c, fontsize=7, color="dimgrey", ha="center", va="center",
+                    xytext=(9 * dx / norm, 9 * dy / norm), textcoords="offset points")
+        rows.append(f"{k + 1:3d} {miss:6.0f} {v:8.0f}")
+    ax.text(1.03, 1.0, "\n".join(rows), transform=ax.transAxes, va="top", ha="left",
+            fontsize=7, family="monospace")
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel("x counter, counts (800 = 1 in)")
     ax.set_ylabel("y counter, counts")
@@ -47,7 +57,7 @@ def xy_figure(trace, corners, windows=()):
     worst = max(range(len(m.segment_max)), key=lambda k: m.segment_max[k])
     fig.suptitle(f"x-y path, {Path(trace.name).name}: largest deviation from a segment "
                  f"{m.segment_max[worst]:.0f} counts (segment {worst + 1});\nvia points "
-                 "labelled with the closest approach (counts) and the speed there (counts/s)",
+                 "numbered; beside them the closest approach to each and the speed there",
                  fontsize=9)
     return fig
 
