@@ -17,6 +17,7 @@ from harness.lab import guard, shell_terminal
 from harness.lab.feed import plant_row, thin, words_of
 from harness.lab.servo_watch import PER_AXIS, SINGLE, ServoWatch
 from harness.lab.session import SPEEDS, Simulator
+from harness.machine.console_session import quiet_stdout
 
 ROOT = Path(__file__).resolve().parents[2]
 STATIC = Path(__file__).resolve().parent / "static"
@@ -216,6 +217,8 @@ async def serve(simulator, disk, symbols, port, speed, announce):
     try:
         loop.add_signal_handler(signal.SIGINT, lambda: asyncio.ensure_future(lab.sim.close()))
         loop.add_signal_handler(signal.SIGTERM, lambda: asyncio.ensure_future(lab.sim.close()))
+        loop.add_signal_handler(signal.SIGHUP, lambda: (quiet_stdout(),
+                                                        asyncio.ensure_future(lab.sim.close())))
         await lab.done.wait()
         await asyncio.sleep(0.2)                  # the last messages reach the pages
     finally:

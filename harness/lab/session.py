@@ -10,6 +10,7 @@ detach, quit (harness/machine/console_session.py).
 import asyncio
 import os
 import re
+import sys
 import tempfile
 from pathlib import Path
 
@@ -156,6 +157,9 @@ class Simulator:
         echo, page = _Echo(loop, self.callbacks[0]), _Echo(loop, self.page)
         try:
             safe = await asyncio.to_thread(self._leave, how, echo, page)
+        except Exception as err:                # the lab must end all the same
+            print(f"[lab] leaving went wrong: {err}", file=sys.stderr)
+            safe = False
         finally:
             self._release()
         self.callbacks[2](safe)

@@ -35,11 +35,17 @@ def attach(loop, keys):
             loop.remove_reader(fd_in)
 
     def echo(data):
-        os.write(fd_out, data)
+        try:
+            os.write(fd_out, data)
+        except OSError:
+            pass                                      # a closed terminal: the page still shows it
 
     def detach():
         loop.remove_reader(fd_in)
-        termios.tcsetattr(fd_in, termios.TCSADRAIN, saved)
+        try:
+            termios.tcsetattr(fd_in, termios.TCSADRAIN, saved)
+        except termios.error:
+            pass                                      # the terminal has gone away
 
     loop.add_reader(fd_in, readable)
     return echo, detach

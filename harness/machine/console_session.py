@@ -12,8 +12,10 @@ ones that are), detaches the trace and the disk, quits SIMH and says what happen
 """
 import os
 import re
+import signal
 import sys
 import tempfile
+import termios
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -59,8 +61,17 @@ def boot_script(disk, trace=None, fast=False, kernel=KERNEL):
 
 
 def say(*lines):
-    sys.stdout.write("\r\n" + "".join(f"[console] {line}\r\n" for line in lines))
-    sys.stdout.flush()
+    try:
+        sys.stdout.write("\r\n" + "".join(f"[console] {line}\r\n" for line in lines))
+        sys.stdout.flush()
+    except OSError:                  # the terminal has gone away: nobody to tell
+        quiet_stdout()
+
+
+def quiet_stdout():
+    """Nobody reads a closed terminal, and writing to it fails: what would be
+    printed goes nowhere rather than cutting a FLUSH short."""
+    sys.stdout = open(os.devnull, "w")
 
 
 def probe_prompt(child, tries=40):
@@ -210,6 +221,35 @@ def leave(child, disk, trace, kernel=KERNEL, busy_wait=BUSY_WAIT, devices=(), ec
     return gone
 
 
+HANGUP = "the terminal closed"
+
+
+def _typed(watcher):
+    """interact()'s input filter: the watcher's, and the terminal going away (end
+    of input, which pexpect would otherwise read again at once, for ever) is a way
+    out like BYE, so the FORTH still FLUSHes."""
+    def feed(data):
+        if not data:
+            raise Leave(HANGUP)
+        return watcher.feed(data)
+    return feed
+
+
+def _on_hangup(signum, frame):
+    raise Leave(HANGUP)
+
+
+def _interact(child, typed, shown):
+    """pexpect's interact. A way out raised inside it stays the way out even when
+    interact's clean-up then fails to restore a terminal that has gone away."""
+    try:
+        child.interact(escape_character=None, input_filter=typed, output_filter=shown)
+    except termios.error as err:
+        if isinstance(err.__context__, Leave):
+            raise err.__context__ from None
+        raise
+
+
 def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BUSY_WAIT):
     """Run the console until the user leaves; the exit status (0: all written)."""
     with tempfile.TemporaryDirectory(prefix="console-") as tmp:
@@ -225,11 +265,14 @@ def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BU
                               dimensions=(size.lines, size.columns))
         child.delaybeforesend = None
         watcher = LineWatcher(bye_halt(kernel))
+        hangup = signal.signal(signal.SIGHUP, _on_hangup)
         try:
             halts = HaltWatcher(kernel, kernel_entry(Path(kernel).with_suffix(".map")) or 0)
-            child.interact(escape_character=None, input_filter=watcher.feed,
-                           output_filter=lambda data: halts.feed(watcher.output(data)))
+            _interact(child, _typed(watcher), lambda data: halts.feed(watcher.output(data)))
         except Leave as way:
+            signal.signal(signal.SIGHUP, signal.SIG_IGN)     # leaving: no second hangup
+            if way.how == HANGUP:
+                quiet_stdout()
             if way.how != "BYE":
                 say(f"{way.how}: leaving; the FORTH FLUSHes its blocks first")
             child.send(way.typed)                # typed ahead of the way out
@@ -237,6 +280,7 @@ def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BU
             say(*gone.report(), "Bye.")
             return 0 if gone.safe else 1
         finally:
+            signal.signal(signal.SIGHUP, hangup)
             pty_child.close(child)
         say("the simulator exited on its own: blocks UPDATEd since the last FLUSH, if "
             f"any, were not written to {disk}")

@@ -55,3 +55,26 @@ def test_the_shell_that_runs_the_lab_is_a_console_too(tmp_path):
     child.expect(pexpect.EOF)
     child.close()
     assert child.exitstatus == 0
+
+
+def test_closing_the_shells_terminal_leaves_with_flush(tmp_path):
+    """The lab's terminal window closed (SIGHUP): FLUSH, detach, exit 0, the
+    UPDATEd block on the disk."""
+    import sys
+    import time
+    import pexpect
+    disk = tmp_path / "robot.dsk"
+    shutil.copyfile(ROOT / "build" / "robot.dsk", disk)
+    child = pexpect.spawn(sys.executable, ["-m", "harness", "lab", "--port", "0",
+                                           "--speed", "full", "--disk", str(disk)],
+                          cwd=str(ROOT), timeout=30, encoding="latin-1")
+    child.expect(r"blocks 0-\d+\.\r+\n ok")
+    child.send(': W S" kept by the lab" 100 BLOCK SWAP CMOVE UPDATE ; W\r')
+    child.expect(r"W  ok")
+    os.close(child.child_fd)
+    deadline = time.monotonic() + 30
+    while child.ptyproc.isalive() and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert not child.ptyproc.isalive(), "the lab outlived its terminal"
+    assert child.ptyproc.exitstatus == 0
+    assert disk.read_bytes()[100 * 1024:100 * 1024 + 15] == b"kept by the lab"

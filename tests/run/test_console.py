@@ -136,6 +136,22 @@ def test_bye_inside_an_open_definition_discards_it_and_flushes(tmp_path):
     expect_left_safely(child, disk, b"kept though a definition was open")
 
 
+def test_a_terminal_that_closes_leaves_like_bye(tmp_path):
+    """The terminal window closed (end of input, hangup): the console FLUSHes and
+    exits instead of spinning on the dead terminal for ever."""
+    import time
+    disk = tmp_path / "work.dsk"
+    shutil.copyfile(PRISTINE, disk)
+    child = console(disk)
+    write_block_word(child, "kept when the window closed")
+    os.close(child.child_fd)                     # the terminal goes away
+    deadline = time.monotonic() + 30
+    while child.ptyproc.isalive() and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert not child.ptyproc.isalive(), "the console outlived its terminal"
+    assert block_text(disk, BLOCK).startswith(b"kept when the window closed")
+
+
 def test_a_flush_that_fails_names_the_blocks_not_written(tmp_path):
     """An fsync that fails (LD_PRELOAD) makes the write a drive error (rl_durable.c)."""
     lib = failing_fsync_library(tmp_path)
