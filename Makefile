@@ -1,7 +1,7 @@
 # Top-level Makefile: the 1983 Cartesian robot on an emulated PDP-11/23.
 #   make        build everything (simulator, FORTH kernel, disk image)
 #   make run    the interactive FORTH console
-#   make test   the test suite (pytest, in parallel: one worker per core)
+#   make test   the test suite (pytest, in parallel: a worker per core, plus one)
 #   make bench  benchmarks, printing their figures
 # Each part has its own fragment in mk/; fragments add to ALL_PRODUCTS and BENCHES.
 SHELL := /bin/bash
@@ -17,8 +17,12 @@ include $(filter-out mk/simh.mk mk/python.mk,$(wildcard mk/*.mk))
 
 all: $(ALL_PRODUCTS)
 
+# One worker more than the cores: a worker waiting on a simulator's answer leaves
+# its core to another. Bytecode is cached even where the environment says not to
+# (PYTHONDONTWRITEBYTECODE): the tests start the harness in hundreds of processes.
+TEST_WORKERS ?= $(shell echo $$(( $$(nproc) + 1 )))
 test: all venv
-	@$(PY) -m pytest -q -rs -n auto --dist loadscope tests
+	@env -u PYTHONDONTWRITEBYTECODE $(PY) -m pytest -q -rs -n $(TEST_WORKERS) --dist loadscope tests
 
 bench: all venv $(BENCHES)
 
