@@ -109,8 +109,8 @@ def main():
           f"with the servo running: "
           f"{100 * idle_console_share(line='1000 LOAD Set.Up.Robot'):5.1f} %")
     wall, done = test_suite()
-    print(f"  make test (pytest -n auto): {wall:6.1f} s, exit status {done.returncode}   "
-          "(goal <= 30 s)")
+    print(f"  make test (the whole suite, as a user runs it): {wall:6.1f} s, "
+          f"exit status {done.returncode}   (goal <= 30 s)")
 
 
 if __name__ == "__main__":

@@ -4,8 +4,13 @@ import os
 import shutil
 import signal
 import socket
+import sys
+
+import pexpect
+
 from harness.cli import main
 from harness.lab.launch import ROOT, LabProcess
+from tests.run.common import outlived
 
 
 def lab(capsys, *args):
@@ -37,17 +42,22 @@ def test_a_simulator_that_dies_ends_the_lab(tmp_path):
     assert "the simulator exited on its own" in server.text()
 
 
-def test_the_shell_that_runs_the_lab_is_a_console_too(tmp_path):
-    """On a terminal, the lab's shell types to the same FORTH as the page and shows
-    what it prints; BYE typed there leaves as in make run (FLUSH, detach, exit 0)."""
-    import sys
-    import pexpect
+def lab_in_a_terminal(tmp_path):
+    """python -m harness lab on a pty (a shell's terminal), booted to the prompt;
+    the child and its disk."""
     disk = tmp_path / "robot.dsk"
     shutil.copyfile(ROOT / "build" / "robot.dsk", disk)
     child = pexpect.spawn(sys.executable, ["-m", "harness", "lab", "--port", "0",
                                            "--speed", "full", "--disk", str(disk)],
                           cwd=str(ROOT), timeout=30, encoding="latin-1")
     child.expect(r"blocks 0-\d+\.\r+\n ok")
+    return child, disk
+
+
+def test_the_shell_that_runs_the_lab_is_a_console_too(tmp_path):
+    """On a terminal, the lab's shell types to the same FORTH as the page and shows
+    what it prints; BYE typed there leaves as in make run (FLUSH, detach, exit 0)."""
+    child, _ = lab_in_a_terminal(tmp_path)
     child.send("2 3 + .\r")
     child.expect(r"2 3 \+ \. 5  ok")
     child.send("BYE\r")
@@ -60,21 +70,10 @@ def test_the_shell_that_runs_the_lab_is_a_console_too(tmp_path):
 def test_closing_the_shells_terminal_leaves_with_flush(tmp_path):
     """The lab's terminal window closed (SIGHUP): FLUSH, detach, exit 0, the
     UPDATEd block on the disk."""
-    import sys
-    import time
-    import pexpect
-    disk = tmp_path / "robot.dsk"
-    shutil.copyfile(ROOT / "build" / "robot.dsk", disk)
-    child = pexpect.spawn(sys.executable, ["-m", "harness", "lab", "--port", "0",
-                                           "--speed", "full", "--disk", str(disk)],
-                          cwd=str(ROOT), timeout=30, encoding="latin-1")
-    child.expect(r"blocks 0-\d+\.\r+\n ok")
+    child, disk = lab_in_a_terminal(tmp_path)
     child.send(': W S" kept by the lab" 100 BLOCK SWAP CMOVE UPDATE ; W\r')
     child.expect(r"W  ok")
     os.close(child.child_fd)
-    deadline = time.monotonic() + 30
-    while child.ptyproc.isalive() and time.monotonic() < deadline:
-        time.sleep(0.05)
-    assert not child.ptyproc.isalive(), "the lab outlived its terminal"
+    assert not outlived(child), "the lab outlived its terminal"
     assert child.ptyproc.exitstatus == 0
     assert disk.read_bytes()[100 * 1024:100 * 1024 + 15] == b"kept by the lab"

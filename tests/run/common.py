@@ -28,3 +28,13 @@ def failing_fsync_library(directory):
     source.write_text(FAILING_FSYNC)
     subprocess.run(["gcc", "-shared", "-fPIC", "-o", str(library), str(source)], check=True)
     return library
+
+
+def outlived(child, seconds=30):
+    """Wait for a pexpect child whose terminal was closed to exit; True if it
+    is still running after `seconds` (it outlived its terminal)."""
+    import time
+    deadline = time.monotonic() + seconds
+    while child.ptyproc.isalive() and time.monotonic() < deadline:
+        time.sleep(0.05)
+    return child.ptyproc.isalive()
