@@ -16,7 +16,9 @@
                                the plant, per axis, four times a tick (the
                                columns of the plant trace, plant_dev.c)
      A,a0,a1,...               the watched addresses (octal), when they change
-     S,time_s,state,speed      state run|pause, after every command
+     S,time_s,state,speed,power
+                               state run|pause, the amplifier rack on|off
+                               (PLANT POWER), after every command
      M,addr,w0,...             memory (addr octal, up to 64 words a row): a dump
    Commands, one per line:
      speed X     pace at X times the 11/23's (RATE instructions per wall
@@ -26,6 +28,8 @@
      step        one tick more, then pause again
      watch a...  octal even addresses below 160000 (at most 64); none = clear
      dump a n    n words from octal address a (at most 28672)
+     power on|off  the amplifier rack's switch (SET PLANT POWER), between
+                 two ticks like every command
    A bad command is answered by a row "E,what" and changes nothing.
 
    Reporting: up to ten times the 11/23's pace every tick is reported. Faster
@@ -125,7 +129,8 @@ static FILE *out (void)
 static void say_state (void)
 {
     if (out ())
-        fprintf (out (), "S,%.6f,%s,%g\n", robot_time (), paused ? "pause" : "run", speed);
+        fprintf (out (), "S,%.6f,%s,%g,%s\n", robot_time (), paused ? "pause" : "run", speed,
+                 plant_dev_powered () ? "on" : "off");
 }
 
 static void say_watch (void)
@@ -206,8 +211,12 @@ static void command (char *line)
         why = set_watch (args);
     else if (strcmp (line, "dump") == 0)
         why = dump (args);
+    else if (strcmp (line, "power") == 0 && (strcmp (args, "on") == 0 || strcmp (args, "off") == 0))
+        plant_dev_power (strcmp (args, "on") == 0);
+    else if (strcmp (line, "power") == 0)
+        why = "power takes on or off";
     else if (*line)
-        why = "commands: speed X, pause, run, step, watch ADDR..., dump ADDR N";
+        why = "commands: speed X, pause, run, step, watch ADDR..., dump ADDR N, power on|off";
     if (why && out ())
         fprintf (out (), "E,%s\n", why);
     say_state ();

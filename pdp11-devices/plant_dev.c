@@ -347,9 +347,19 @@ static t_stat plant_set_power_switch (UNIT *uptr, int32 val, char *cptr, void *d
         printf ("PLANT: POWER is ON or OFF (the amplifier rack's switch)\n");
         return SCPE_ARG;
     }
+    plant_dev_power (on);
+    return SCPE_OK;
+}
+
+void plant_dev_power (int on)
+{
     plant_dev_catch_up ();                       /* what happened so far, with the old state */
     plant_set_power (&robot_plant, on);
-    return SCPE_OK;
+}
+
+int plant_dev_powered (void)
+{
+    return robot_plant.power;
 }
 
 static t_stat plant_show_global (FILE *st, UNIT *uptr, int32 val, void *desc)

@@ -28,6 +28,8 @@ uint16 plant_dev_counter (int axis);              /* DRV11 INBUF */
 extern gripper robot_gripper;
 void plant_dev_gripper_lines (int step, int dir);  /* DRV11 OUTBUF bits 4, 5 */
 int plant_dev_gripper_contact (void);             /* DRV11 REQ B */
+void plant_dev_power (int on);                    /* the amplifier rack's switch */
+int plant_dev_powered (void);
 void drv11_lines_changed (void);                  /* REQ lines may have moved */
 void plant_dev_init (void);
 void plant_dev_rate_changing (int32 old_rate);    /* integrate up to now, old time */

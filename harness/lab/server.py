@@ -46,7 +46,7 @@ class Lab:
         self.pages = set()
         self.scrollback = bytearray()
         self.rows = []
-        self.status = {"time": 0.0, "tick": 0, "state": "run", "speed": speed}
+        self.status = {"time": 0.0, "tick": 0, "state": "run", "speed": speed, "power": "off"}
         self.servo = {}
         self.sent = None                 # the status and servo words the pages last had
         self.done = asyncio.Event()
@@ -80,6 +80,8 @@ class Lab:
         elif row.kind == "S":
             self.status["time"] = float(row.fields[0])
             self.status["state"] = row.fields[1]
+            if len(row.fields) > 3:
+                self.status["power"] = row.fields[3]
         elif row.kind == "E":
             print(f"[lab] the LAB device refused a command: {','.join(row.fields)}",
                   file=sys.stderr)
@@ -125,6 +127,8 @@ class Lab:
         elif kind == "speed" and message.get("v") in SPEEDS:
             self.status["speed"] = message["v"]
             self.sim.command(f"speed {SPEEDS[message['v']]}")
+        elif kind == "power" and message.get("v") in ("on", "off"):
+            self.sim.command(f"power {message['v']}")
         elif kind in ("pause", "run", "step"):
             self.sim.command(kind)
 

@@ -18,7 +18,7 @@ import pexpect
 
 from harness.lab.feed import Lines, lab_row
 from harness.machine import simh
-from harness.machine.console_session import KERNEL, leave, say
+from harness.machine.console_session import KERNEL, RACK_OFF, leave, say
 from harness.machine.console_watch import Leave, LineWatcher
 from harness.machine.simh import MACHINE_INI, ROOT
 
@@ -44,6 +44,7 @@ def boot_script(disk, lab_fifo, speed, kernel=KERNEL):
             f"attach rl0 {Path(disk).resolve()}\n"
             f"attach lab {lab_fifo}\n"
             f"set lab speed={speed}\n"
+            f"{RACK_OFF}\n"                     # as make run: the page has the switch
             f"load {kernel}\n"
             "go\n")
 

@@ -7,9 +7,8 @@ from selenium.webdriver.common.by import By
 
 from labpage import ARTIFACTS, click, js, type_line, wait_for
 
-# Until Set.Up.Robot the axes drift on their zero offsets (y at +39 counts/s): at
-# full speed the seconds a loaded host takes to start the browser would put y on
-# its upper stop, and the move could not take it 800 counts further.
+# The lab boots with the amplifier rack off, as make run does: nothing drifts until
+# the page's switch is turned on after Set.Up.Robot. x10 keeps the run short.
 LAB_SPEED = "x10"
 
 
@@ -32,6 +31,10 @@ def test_a_move_shows_on_the_robot_and_the_scope(page):
     type_line(page, "Set.Up.Robot")
     wait_for("the servo's words to be found by name",
              lambda: js(page, "window.lab.servo['Desire.Pos']"))
+    assert js(page, "window.lab.status.power") == "off"       # booted as make run does
+    click(page, "#power")                            # the servo holds the axes: rack on
+    wait_for("the amplifiers on", lambda: js(page, "window.lab.status.power") == "on")
+    assert page.find_element(By.ID, "power").text == "Amplifiers ON"
     robot_before = js(page, "document.getElementById('robot').toDataURL()")
     start = js(page, "window.lab.latest.map(r => r[5])")
     click(page, '#speeds button[data-speed="real"]')  # the scope's 30 s keep the whole move

@@ -38,7 +38,7 @@ def test_rows_and_commands(tmp_path, ctl):
                         "detach lab\n")
     assert "LAB, running, speed=10x, 2 words watched: 140000=001234 140002=177777" in out_text
     text = out.read_text()
-    assert text.startswith("A\nS,0.000000,run,0\n")       # at the attach, before SET
+    assert text.startswith("A\nS,0.000000,run,0,on\n")    # at the attach, before SET
     assert rows(out, "A") == [["140000", "140002"]]
     assert rows(out, "M") == [["140000", str(0o1234), "65535"]]
     assert [e[0] for e in rows(out, "E")] == [
@@ -55,6 +55,18 @@ def test_rows_and_commands(tmp_path, ctl):
                                               "0.016667", "0.020833"]
     x = plant[0][2:]                             # DAC at zero volts; x drifts on its offset
     assert x[:2] == ["2048", "-58.590"] and float(x[2]) < 0 and x[4] == "0"
+
+
+def test_power_switches_the_amplifier_rack(tmp_path, ctl):
+    """The page's rack switch: power off/on reaches SET PLANT POWER; a bad word
+    is refused and changes nothing."""
+    out = tmp_path / "lab"
+    ctl("power off\npower maybe\n")
+    shown = simh.run(f"load {KERNEL}\nattach lab {out}\nstep 6000\nshow plant\ndetach lab\n")
+    assert "power=off" in shown
+    states = rows(out, "S")
+    assert states[0][3] == "on" and states[-1][3] == "off"
+    assert [e[0] for e in rows(out, "E")] == ["power takes on or off"]
 
 
 def test_set_lab_speed_refuses_bad_values_and_keeps_the_old_one(tmp_path):

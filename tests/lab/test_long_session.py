@@ -8,7 +8,7 @@ from selenium.webdriver.common.by import By
 
 from labpage import click, js, type_line, wait_for
 
-LAB_SPEED = "x10"                  # the axes drift until Set.Up.Robot: see test_browser.py
+LAB_SPEED = "x10"                  # see test_browser.py
 pytestmark = pytest.mark.skipif(not os.environ.get("LAB_LONG"),
                                 reason="the long lab session runs with make test-lab-long")
 
@@ -26,6 +26,8 @@ def test_blocks_load_at_real_pace(page):
     assert js(page, "Object.keys(window.lab.servo).length") == 0
     assert "Error" not in type_line(page, "1000 LOAD", timeout=300)
     type_line(page, "Set.Up.Robot")
+    click(page, "#power")
+    wait_for("the amplifiers on", lambda: js(page, "window.lab.status.power") == "on")
     type_line(page, "800 0 0 0 Abs.Move")
     wait_for("x near 800", lambda: abs(js(page, "window.lab.latest[0][6]") - 800) < 60, 60)
 

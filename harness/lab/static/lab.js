@@ -22,7 +22,7 @@ const socket = new WebSocket(`ws://${location.host}/ws?token=${encodeURIComponen
 const send = (message) => socket.readyState === 1 && socket.send(JSON.stringify(message));
 
 const lab = {                      // everything the page knows; window.lab for tests
-  stops: {}, status: { time: 0, tick: 0, state: "run", speed: "real" },
+  stops: {}, status: { time: 0, tick: 0, state: "run", speed: "real", power: "off" },
   servo: {}, perAxis: [], single: [], traces: AXES.map(() => []), latest: [null, null, null, null],
   rowsSeen: 0, frozenAt: null, axis: 0, window: 2, ended: false, connected: false, dirty: true,
 };
@@ -106,6 +106,8 @@ document.querySelectorAll("#speeds button").forEach((b) =>
 document.getElementById("pause").addEventListener("click", () =>
   send({ t: lab.status.state === "pause" ? "run" : "pause" }));
 document.getElementById("step").addEventListener("click", () => send({ t: "step" }));
+document.getElementById("power").addEventListener("click", () =>
+  send({ t: "power", v: lab.status.power === "on" ? "off" : "on" }));
 
 function drawStatus() {
   const s = lab.status;
@@ -117,6 +119,9 @@ function drawStatus() {
     else setBadge("run", `RUN ${speedText}`);
   }
   document.getElementById("pause").textContent = s.state === "pause" ? "Run" : "Pause";
+  const power = document.getElementById("power");
+  power.textContent = s.power === "on" ? "Amplifiers ON" : "Amplifiers OFF";
+  power.classList.toggle("on", s.power === "on");
   document.querySelectorAll("#speeds button").forEach((b) =>
     b.classList.toggle("on", b.dataset.speed === s.speed));
 }
