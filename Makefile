@@ -19,9 +19,11 @@ all: $(ALL_PRODUCTS)
 
 # One worker more than the cores: a worker waiting on a simulator's answer leaves
 # its core to another. Bytecode is cached even where the environment says not to
-# (PYTHONDONTWRITEBYTECODE): the tests start the harness in hundreds of processes.
+# (PYTHONDONTWRITEBYTECODE), and written before the workers start, once: the
+# tests start the harness in hundreds of processes.
 TEST_WORKERS ?= $(shell echo $$(( $$(nproc) + 1 )))
 test: all venv
+	@env -u PYTHONDONTWRITEBYTECODE $(PY) -m compileall -q harness tests > /dev/null
 	@env -u PYTHONDONTWRITEBYTECODE $(PY) -m pytest -q -rs -n $(TEST_WORKERS) --dist loadscope tests
 
 bench: all venv $(BENCHES)
