@@ -31,6 +31,13 @@ def console(disk, *extra, env=None):
     return child
 
 
+def fresh_console(tmp_path, *extra, env=None):
+    """The console on a fresh copy of the pristine disk: the child and the disk."""
+    disk = tmp_path / "work.dsk"
+    shutil.copyfile(PRISTINE, disk)
+    return console(disk, *extra, env=env), disk
+
+
 def write_block_word(child, text):
     child.send(f': W S" {text}" {BLOCK} BLOCK SWAP CMOVE UPDATE ; W\r')
     child.expect(r" ok\r\n")
@@ -50,9 +57,7 @@ def expect_left_safely(child, disk, text):
 
 
 def test_console_command_simh_prompt_and_bye_flushes(tmp_path):
-    disk = tmp_path / "work.dsk"
-    shutil.copyfile(PRISTINE, disk)
-    child = console(disk, "--trace", str(tmp_path / "t.csv"))
+    child, disk = fresh_console(tmp_path, "--trace", str(tmp_path / "t.csv"))
     child.send("1 2 + .\r")
     child.expect(r"1 2 \+ \. 3  ok\r\n")
     child.send("\x05")                                   # ^E: SIMH's prompt
@@ -75,9 +80,7 @@ def test_console_command_simh_prompt_and_bye_flushes(tmp_path):
 @pytest.mark.parametrize("keys,how", [("\x04", None),        # ^D at sim>
                                       ("  q\r", "SIMH's QUIT at its prompt")])
 def test_every_way_out_of_the_simh_prompt_flushes_first(tmp_path, keys, how):
-    disk = tmp_path / "work.dsk"
-    shutil.copyfile(PRISTINE, disk)
-    child = console(disk)
+    child, disk = fresh_console(tmp_path)
     write_block_word(child, f"left with {keys!r}")
     child.send("\x05")
     child.expect("sim> ")
@@ -88,9 +91,7 @@ def test_every_way_out_of_the_simh_prompt_flushes_first(tmp_path, keys, how):
 
 
 def test_ctrl_c_is_the_forths_until_sim_where_it_leaves_after_flush(tmp_path):
-    disk = tmp_path / "work.dsk"
-    shutil.copyfile(PRISTINE, disk)
-    child = console(disk)
+    child, disk = fresh_console(tmp_path)
     child.send("\x05")
     child.expect("sim> ")
     child.send("examine 0\r")                  # E... is EXAMINE, not EXIT
@@ -110,9 +111,7 @@ def test_ctrl_c_is_the_forths_until_sim_where_it_leaves_after_flush(tmp_path):
 
 
 def test_bye_while_a_word_runs_stops_it_with_ctrl_c_and_flushes(tmp_path):
-    disk = tmp_path / "work.dsk"
-    shutil.copyfile(PRISTINE, disk)
-    child = console(disk, "--busy-wait", "0.5")
+    child, disk = fresh_console(tmp_path, "--busy-wait", "0.5")
     child.send(f': W S" written while busy" {BLOCK} BLOCK SWAP CMOVE UPDATE ; '
                ": SPIN BEGIN AGAIN ; W SPIN\r")
     child.send("BYE\r")
@@ -124,9 +123,7 @@ def test_bye_while_a_word_runs_stops_it_with_ctrl_c_and_flushes(tmp_path):
 def test_bye_inside_an_open_definition_discards_it_and_flushes(tmp_path):
     """BYE typed while a definition is open would be compiled, and so would FLUSH:
     the console sees the ` compiled` prompt and stops the definition first."""
-    disk = tmp_path / "work.dsk"
-    shutil.copyfile(PRISTINE, disk)
-    child = console(disk)
+    child, disk = fresh_console(tmp_path)
     write_block_word(child, "kept though a definition was open")
     child.send(": HALF-DONE 1 2\r")
     child.expect(r" compiled\r\n")
@@ -139,9 +136,7 @@ def test_bye_inside_an_open_definition_discards_it_and_flushes(tmp_path):
 def test_a_terminal_that_closes_leaves_like_bye(tmp_path):
     """The terminal window closed (end of input, hangup): the console FLUSHes and
     exits instead of spinning on the dead terminal for ever."""
-    disk = tmp_path / "work.dsk"
-    shutil.copyfile(PRISTINE, disk)
-    child = console(disk)
+    child, disk = fresh_console(tmp_path)
     write_block_word(child, "kept when the window closed")
     os.close(child.child_fd)                     # the terminal goes away
     assert not outlived(child), "the console outlived its terminal"
@@ -151,9 +146,7 @@ def test_a_terminal_that_closes_leaves_like_bye(tmp_path):
 def test_a_flush_that_fails_names_the_blocks_not_written(tmp_path):
     """An fsync that fails (LD_PRELOAD) makes the write a drive error (rl_durable.c)."""
     lib = failing_fsync_library(tmp_path)
-    disk = tmp_path / "work.dsk"
-    shutil.copyfile(PRISTINE, disk)
-    child = console(disk, env={**os.environ, "LD_PRELOAD": str(lib)})
+    child, disk = fresh_console(tmp_path, env={**os.environ, "LD_PRELOAD": str(lib)})
     write_block_word(child, "never written")
     child.send("BYE\r")
     child.expect(r"FLUSH failed \(Error: block write error: FLUSH\)\.\r+\n")
@@ -188,9 +181,7 @@ def simh_command(child, command):
 
 
 def test_readme_first_session_with_the_rack_switched_on_by_hand(tmp_path):
-    disk = tmp_path / "work.dsk"
-    shutil.copyfile(PRISTINE, disk)
-    child = console(disk)
+    child, disk = fresh_console(tmp_path)
     assert "power=off" in simh_command(child, "show plant")      # the console's boot
     for line in ("1000 LOAD", "Set.Up.Robot"):
         child.send(line + "\r")
@@ -209,9 +200,7 @@ def test_readme_first_session_with_the_rack_switched_on_by_hand(tmp_path):
 
 def test_a_simulator_that_dies_is_reported_with_what_it_cost(tmp_path):
     """SIMH's `!` runs a shell command: killing SIMH from it stands for a crash."""
-    disk = tmp_path / "work.dsk"
-    shutil.copyfile(PRISTINE, disk)
-    child = console(disk)
+    child, disk = fresh_console(tmp_path)
     write_block_word(child, "lost in the crash")
     child.send("\x05")
     child.expect("sim> ")
@@ -224,9 +213,7 @@ def test_a_simulator_that_dies_is_reported_with_what_it_cost(tmp_path):
 
 
 def test_bye_after_the_disk_was_detached_says_so_and_names_the_lost_block(tmp_path):
-    disk = tmp_path / "work.dsk"
-    shutil.copyfile(PRISTINE, disk)
-    child = console(disk)
+    child, disk = fresh_console(tmp_path)
     write_block_word(child, "no disk to write to")
     simh_command(child, "detach rl0")
     child.send("BYE\r")
@@ -242,9 +229,7 @@ def test_bye_after_the_disk_was_detached_says_so_and_names_the_lost_block(tmp_pa
 def test_the_bye_word_leaves_like_typed_bye(tmp_path):
     """The FORTH's BYE word, inside a definition, halts the simulator at (BYE);
     the console sees that halt, continues the FORTH, FLUSHes and detaches."""
-    disk = tmp_path / "work.dsk"
-    shutil.copyfile(PRISTINE, disk)
-    child = console(disk)
+    child, disk = fresh_console(tmp_path)
     write_block_word(child, "left by the BYE word")
     child.send(": LEAVE-NOW 1 . BYE ; LEAVE-NOW\r")
     child.expect_exact("[console] the BYE word: leaving; the FORTH FLUSHes its blocks first")
