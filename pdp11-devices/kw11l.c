@@ -23,8 +23,8 @@
    Devices SIMH paces from the clock (console polling, RQ's timer) read
    tmr_poll/tmxr_poll: they are set to RATE/60 instructions, a constant.
 
-   Pacing to the wall clock (nothing else here reads the host's clock, and
-   pacing changes only when things happen on the host: every event keeps its
+   Pacing to the wall clock (wall_pacer.c, shared with the LAB device; pacing
+   changes only when things happen on the host: every event keeps its
    instruction count, so runs stay deterministic). At a tick, the clock sleeps
    the host while simulated time is ahead of the wall clock since a reference
    point; a reference more than 100 ms behind (the machine was stopped at
@@ -57,10 +57,8 @@ static int32 lks;
 static int32 tick_acc;                  /* remainder of the exact tick series */
 static uint32 ticks;                    /* ticks since power-up */
 static int realtime;                    /* SET CLK REALTIME */
-static int pacing;                      /* a reference point is held */
-static uint32 pace_wall_ms;             /* host ms at the reference point */
-static double pace_time_s;              /* simulated s at the reference point */
-#define PACE_SLACK_MS 100.0             /* further behind: take a new reference */
+static wall_pacer pacer;                 /* wall_pacer.c */
+#define PACE_SLACK_S 0.1                /* further behind: take a new reference */
 
 static t_stat kwl_rd (int32 *data, int32 PA, int32 access);
 static t_stat kwl_wr (int32 data, int32 PA, int32 access);
@@ -127,20 +125,10 @@ static t_stat kwl_wr (int32 data, int32 PA, int32 access)
 /* At a tick: sleep while simulated time is ahead of the host's (see above). */
 static void pace (void)
 {
-    double ahead_ms;
-    uint32 wall;
-    if (!realtime && !(sim_idle_enab && wait_state)) {
-        pacing = 0;
-        return;
-    }
-    wall = sim_os_msec ();
-    ahead_ms = (robot_time () - pace_time_s) * 1000.0 - (double) (uint32) (wall - pace_wall_ms);
-    if (!pacing || ahead_ms < -PACE_SLACK_MS) {
-        pacing = 1;
-        pace_wall_ms = wall;
-        pace_time_s = robot_time ();
-    } else if (ahead_ms >= 1.0)
-        sim_os_ms_sleep ((unsigned int) (ahead_ms > 1000.0 ? 1000.0 : ahead_ms));
+    if (realtime || (sim_idle_enab && wait_state))
+        wall_pacer_pace (&pacer, 1.0, PACE_SLACK_S);
+    else
+        wall_pacer_drop (&pacer);
 }
 
 static t_stat kwl_svc (UNIT *uptr)
@@ -192,7 +180,7 @@ static t_stat kwl_set_realtime (UNIT *uptr, int32 val, char *cptr, void *desc)
     if (cptr != NULL)
         return SCPE_ARG;
     realtime = val;
-    pacing = 0;
+    wall_pacer_drop (&pacer);
     return SCPE_OK;
 }
 

@@ -54,7 +54,6 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
-#include <time.h>
 #include <unistd.h>
 
 #define TICKS_PER_S  60
@@ -66,7 +65,7 @@
 #define DUMP_ROW     64
 #define MEM_TOP      0160000            /* the I/O page starts here */
 #define SPEED_MAX    1000.0
-#define LATE_S       0.25               /* further behind the wall than this: rebase */
+#define LATE_S       0.25               /* further behind the wall than this: a new reference */
 #define CMD_MAX      1024
 
 extern uint16 *M;
@@ -85,7 +84,7 @@ static char cmd_buf[CMD_MAX];
 static int cmd_len;
 static int32 watch[WATCH_MAX];
 static int watch_n;
-static double wall0, sim0;              /* pacing base: wall seconds at simulated sim0 */
+static wall_pacer pacer;                 /* wall_pacer.c */
 
 static t_stat lab_svc (UNIT *uptr);
 static t_stat lab_attach (UNIT *uptr, char *cptr);
@@ -108,17 +107,9 @@ DEVICE lab_dev = {
     NULL, 0
 };
 
-static double wall (void)
+static void rebase (void)                /* pace from here on */
 {
-    struct timespec ts;
-    clock_gettime (CLOCK_MONOTONIC, &ts);
-    return ts.tv_sec + ts.tv_nsec * 1e-9;
-}
-
-static void rebase (void)
-{
-    wall0 = wall ();
-    sim0 = robot_time ();
+    wall_pacer_drop (&pacer);
 }
 
 static FILE *out (void)
@@ -272,7 +263,7 @@ static int report_this_tick (void)
         skip = 1;
         return 1;
     }
-    now = wall ();
+    now = wall_seconds ();
     if (now - reported_wall < REPORT_S)
         return 0;
     skip = (int32) (tick_no - reported_tick) / 2;
@@ -289,16 +280,8 @@ static void flush_all (void)
 
 static void pace (void)
 {
-    double now, target;
     if (speed <= 0) return;
-    now = wall ();
-    target = wall0 + (robot_time () - sim0) / speed;
-    if (target > now) {
-        struct timespec ts = { (time_t) (target - now), 0 };
-        ts.tv_nsec = (long) ((target - now - ts.tv_sec) * 1e9);
-        nanosleep (&ts, NULL);
-    } else if (now - target > LATE_S)
-        rebase ();                              /* the host fell behind: no race to catch up */
+    wall_pacer_pace (&pacer, speed, LATE_S);
 }
 
 static void wait_while_paused (void)

@@ -16,6 +16,12 @@ typedef void (*robot_rate_hook) (int32 old_rate);
 void robot_on_rate_change (robot_rate_hook before, robot_rate_hook after);
 void robot_set_rate (int32 rate);                  /* SET CLK RATE: hooks, new base */
 
+/* Pacing to the host's clock (wall_pacer.c), for the devices asked to. */
+typedef struct { int held; double wall0, sim0; } wall_pacer;
+double wall_seconds (void);                        /* the host's monotonic clock */
+void wall_pacer_pace (wall_pacer *p, double speed, double slack_s);  /* sleep while ahead */
+void wall_pacer_drop (wall_pacer *p);              /* the next call takes a new reference */
+
 /* The clock (kw11l.c): its part of a rate change. */
 void kwl_rate_changed (int32 old_rate);
 
