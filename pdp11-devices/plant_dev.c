@@ -124,8 +124,10 @@ void plant_dev_catch_up (void)
 {
     double hand[3];
     plant_advance (&robot_plant, robot_time ());
-    hand_position (hand);
-    gripper_hand_at (&robot_gripper, hand);
+    if (robot_gripper.part) {                    /* only a placed part cares where the hand is */
+        hand_position (hand);
+        gripper_hand_at (&robot_gripper, hand);
+    }
 }
 
 static void trace_row (int axis)
