@@ -20,7 +20,7 @@ from harness.lab.feed import Lines, lab_row
 from harness.machine import simh
 from harness.machine.console_session import KERNEL, RACK_OFF, leave, say
 from harness.machine.console_watch import Leave, LineWatcher
-from harness.machine.simh import MACHINE_INI, ROOT
+from harness.machine.simh import ROOT
 
 SPEEDS = {"real": 1, "x10": 10, "full": 0}
 STOPS = re.compile(rb"^\s+([XYZT])\s+\S+\s+\S+\s+\S+\s+\S+\s+(-?[\d.]+)\s+(-?[\d.]+)\s+\S+\s*$",
@@ -40,13 +40,10 @@ def plant_stops(simulator):
 
 
 def boot_script(disk, lab_fifo, speed, kernel=KERNEL):
-    return (f"do {MACHINE_INI}\n"
-            f"attach rl0 {Path(disk).resolve()}\n"
-            f"attach lab {lab_fifo}\n"
-            f"set lab speed={speed}\n"
-            f"{RACK_OFF}\n"                     # as make run: the page has the switch
-            f"load {kernel}\n"
-            "go\n")
+    """The lab's machine: the LAB device on its FIFO, the rack off as in make run
+    (the page has the switch)."""
+    return simh.boot_script(disk, kernel, setup=f"attach lab {lab_fifo}\n"
+                            f"set lab speed={speed}\n{RACK_OFF}\n")
 
 
 class Simulator:

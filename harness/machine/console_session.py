@@ -26,9 +26,9 @@ from harness.machine import block_buffers, pty_child
 from harness.machine.console_halt import HaltWatcher, kernel_entry
 from harness.machine.console_watch import Leave, LineWatcher
 from harness.machine.scripted_machine import ScriptError, read_kernel_map
-from harness.machine.simh import MACHINE_INI
+from harness.machine import simh
+from harness.machine.simh import KERNEL
 
-KERNEL = Path(__file__).resolve().parents[2] / "build" / "kernel.lda"
 # the 11/23's pace (CLK RATE, 300K instructions/s) from the first instruction; SIMH's
 # SET THROTTLE cannot pace the kernel's WAIT (pdp11-devices/kw11l.c)
 REALTIME = "set clk realtime"
@@ -51,13 +51,10 @@ SIMH_ERROR = re.compile(r"(Unit not attached|Non-existent[^\r\n]*|[A-Z][^\r\n]*e
 
 
 def boot_script(disk, trace=None, fast=False, kernel=KERNEL):
-    return (f"do {MACHINE_INI}\n"
-            + (IDLE if fast else REALTIME) + "\n"
-            + RACK_OFF + "\n"
-            + f"attach rl0 {Path(disk).resolve()}\n"
-            + (f"attach plant {Path(trace).resolve()}\n" if trace else "")
-            + f"load {kernel}\n"
-            "go\n")
+    """The console's machine: paced (or idling) as asked, the rack off, a trace."""
+    trace_line = f"attach plant {Path(trace).resolve()}\n" if trace else ""
+    return simh.boot_script(disk, kernel, setup=f"{IDLE if fast else REALTIME}\n"
+                            f"{RACK_OFF}\n{trace_line}")
 
 
 def say(*lines):

@@ -20,11 +20,9 @@ import pexpect
 
 from harness.blocks.disk import RL02_BYTES
 from harness.machine import pty_child
+from harness.machine.simh import KERNEL, ROOT, boot_script
 
-ROOT = Path(__file__).resolve().parents[2]
 SIMULATOR = ROOT / os.environ.get("PDP11_SIM", "build/pdp11")
-KERNEL = ROOT / "build" / "kernel.lda"
-MACHINE_INI = ROOT / "pdp11-devices" / "machine.ini"
 
 OK = re.compile(r" (?:ok|compiled)\r\n")   # compiled: a definition or structure is open
 ERROR = re.compile(r"\r\nError: ([^\r\n]*)\r\n")
@@ -58,14 +56,6 @@ def blank_disk(path):
     return path
 
 
-def boot_script(disk, kernel=KERNEL, machine_ini=MACHINE_INI):
-    """SIMH commands: the machine, the disk, the kernel, start."""
-    return (f"do {machine_ini}\n"
-            f"attach rl0 {disk}\n"
-            f"load {kernel}\n"
-            "go\n")
-
-
 class Machine:
     def __init__(self, disk=None, simulator=SIMULATOR, kernel=KERNEL, timeout=30,
                  extra_commands=""):
@@ -74,10 +64,7 @@ class Machine:
         tmp = Path(self._tmp.name)
         self.disk = Path(disk) if disk else blank_disk(tmp / "rl0.dsk")
         ini = tmp / "boot.ini"
-        script = boot_script(self.disk, kernel)
-        if extra_commands:
-            script = script.replace("go\n", extra_commands + "go\n")
-        ini.write_text(script)
+        ini.write_text(boot_script(self.disk, kernel, setup=extra_commands))
         self.child = pexpect.spawn(str(simulator), [str(ini)], cwd=str(ROOT),
                                    encoding="latin-1", timeout=timeout,
                                    dimensions=(24, 200))

@@ -40,8 +40,19 @@ ROOT = Path(__file__).resolve().parents[2]
 PDP11 = ROOT / "build" / "pdp11"
 PDP11_STOCK = ROOT / "build" / "pdp11-stock"
 MACHINE_INI = ROOT / "pdp11-devices" / "machine.ini"
+KERNEL = ROOT / "build" / "kernel.lda"
 
 _EXAMINED = re.compile(r"^([A-Za-z0-9_]+):\t([0-9]+)\s*$", re.M)
+
+
+def boot_script(disk, kernel=KERNEL, setup=""):
+    """SIMH commands that boot the FORTH: the machine, the disk, `setup` (more
+    SIMH command lines, each ending in a newline), the kernel, start."""
+    return (f"do {MACHINE_INI}\n"
+            f"attach rl0 {Path(disk).resolve()}\n"
+            f"{setup}"
+            f"load {kernel}\n"
+            "go\n")
 
 
 class SimhError(RuntimeError):

@@ -2,7 +2,8 @@
 import pexpect
 
 from harness.machine.console_halt import HaltWatcher, kernel_entry
-from harness.machine.machine import KERNEL, MACHINE_INI, SIMULATOR
+from harness.machine.machine import SIMULATOR
+from harness.machine.simh import KERNEL, MACHINE_INI
 
 
 def test_a_halt_gets_a_hint_in_pieces():
