@@ -1,20 +1,20 @@
-/* robot.h: what the project's SIMH device files share (glue only; the
-   physics is plant.h). See robot_sys.c for how they join SIMH. */
-#ifndef ROBOT_H
-#define ROBOT_H
+/* devices.h: what the project's SIMH device files share (glue only; the
+   physics is plant.h). See machine_sys.c for how they join SIMH. */
+#ifndef DEVICES_H
+#define DEVICES_H
 
 #include "pdp11_defs.h"
 #include "plant.h"
 #include "gripper.h"
 
 /* Time base (time_base.c): simulated time = executed instructions / rate. */
-extern int32 robot_rate;                 /* instructions per simulated second */
-double robot_time (void);                /* simulated seconds since power-up */
-int32 robot_share (int32 per_second, int32 *acc);  /* next interval of an exact n/s series */
-void robot_rescale (UNIT *uptr, int32 old_rate);   /* keep an event's simulated time */
-typedef void (*robot_rate_hook) (int32 old_rate);
-void robot_on_rate_change (robot_rate_hook before, robot_rate_hook after);
-void robot_set_rate (int32 rate);                  /* SET CLK RATE: hooks, new base */
+extern int32 clock_rate;                 /* instructions per simulated second */
+double clock_time (void);                /* simulated seconds since power-up */
+int32 clock_share (int32 per_second, int32 *acc);  /* next interval of an exact n/s series */
+void clock_rescale (UNIT *uptr, int32 old_rate);   /* keep an event's simulated time */
+typedef void (*clock_rate_hook) (int32 old_rate);
+void clock_on_rate_change (clock_rate_hook before, clock_rate_hook after);
+void clock_set_rate (int32 rate);                  /* SET CLK RATE: hooks, new base */
 
 /* Pacing to the host's clock (wall_pacer.c), for the devices asked to. */
 typedef struct { int held; double wall0, sim0; } wall_pacer;
@@ -43,8 +43,8 @@ void plant_dev_rate_changed (int32 old_rate);     /* pending samples keep their 
 void plant_dev_command_done (void);               /* after each SCP command */
 
 /* Text files written by a device (text_attach.c): `what` starts the error message. */
-t_stat robot_attach_text (UNIT *uptr, char *cptr, const char *what);
-void robot_detach_text (UNIT *uptr);
+t_stat device_attach_text (UNIT *uptr, char *cptr, const char *what);
+void device_detach_text (UNIT *uptr);
 
 /* EXAMINE/DEPOSIT at 160000-177777 reach the I/O page (io_page_examine.c). */
 void io_page_examine_install (void);

@@ -9,11 +9,8 @@ and, in the script's comments, "# needs: 1000 LOAD" (skipped while the appendix
 blocks cannot load on this kernel) and "# fails-at: N" (the run must stop with
 exit status 1 at script line N, naming it, and run nothing after it).
 """
-import argparse
-import contextlib
 import difflib
 import functools
-import io
 import re
 import tempfile
 from dataclasses import dataclass
@@ -21,10 +18,9 @@ from pathlib import Path
 
 from harness.analysis import trace_features
 from harness.analysis.trace import read as read_trace
-from harness.commands import run as run_command
-from harness.commands.invoke import PROG, run_reported
+from harness.machine.build import ROOT
+from harness.machine.script_run import ERRORS, run_file
 
-ROOT = Path(__file__).resolve().parents[2]
 SCENARIOS = ROOT / "tests" / "regression" / "scenarios"
 FREE = re.compile(r"\d+ bytes free")
 META = re.compile(r"^#\s*(needs|fails-at|options):\s*(.*?)\s*$", re.M)
@@ -75,21 +71,34 @@ def scenarios(names=()):
     return [Scenario(p) for p in sorted(SCENARIOS.glob("*.script"))]
 
 
+def run_options(options):
+    """The keyword arguments of script_run.run_file for a scenario's `# options:`
+    (the `run` command's --keep-going and --line-limit SECONDS)."""
+    kwargs, words = {}, list(options)
+    while words:
+        word = words.pop(0)
+        if word == "--keep-going":
+            kwargs["keep_going"] = True
+        elif word == "--line-limit" and words:
+            kwargs["line_limit"] = float(words.pop(0))
+        else:
+            raise ValueError(f"scenario option {word!r}: only --keep-going and "
+                             "--line-limit SECONDS are known")
+    return kwargs
+
+
 def run(scenario, out_dir):
-    """Run the scenario through the `run` command, as `python -m harness run
-    SCRIPT --out DIR OPTIONS` would in process; its outcome."""
-    out_dir = Path(out_dir)
-    parser = argparse.ArgumentParser(prog=f"{PROG} run")
-    run_command.configure(parser)
-    args = parser.parse_args([str(scenario.path), "--out", str(out_dir), *scenario.options])
-    stdout, stderr = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(stdout), contextlib.redirect_stderr(stderr):
-        status = run_reported(args, run_command.ERRORS, "run")
-    transcript = out_dir / f"{scenario.name}.transcript"
-    trace = out_dir / f"{scenario.name}.trace.csv"
-    if not transcript.exists():
-        return Outcome(status, stderr.getvalue(), "", {})
-    return Outcome(status, stderr.getvalue(), transcript.read_text(),
+    """Run the scenario (script_run.run_file, as the `run` command does, with the
+    scenario's options) into out_dir; its outcome, stderr as `run` prints it."""
+    transcript = Path(out_dir) / f"{scenario.name}.transcript"
+    trace = Path(out_dir) / f"{scenario.name}.trace.csv"
+    try:
+        _, result = run_file(scenario.path, transcript, trace, **run_options(scenario.options))
+    except ERRORS as err:
+        return Outcome(1, "".join(f"python -m harness run: error: {line}\n"
+                                  for line in str(err).splitlines()), "", {})
+    stderr = "".join(f"{f.where(str(scenario.path))}\n" for f in result.failures)
+    return Outcome(1 if result.failures else 0, stderr, transcript.read_text(),
                    trace_features.features(read_trace(trace)))
 
 

@@ -13,9 +13,9 @@ import sys
 
 import pexpect
 
-from harness.machine.machine import OK, ROOT, SIMULATOR, Machine
+from harness.machine.build import RATE, ROOT
+from harness.machine.machine import OK, SIMULATOR, Machine
 
-RATE = 300_000
 
 # the counting words: breakpoints go on MARK and END-MARK; QUIET/LOUD hold the
 # clock's interrupts off; B-EMPTY measures the pair itself

@@ -9,17 +9,14 @@
   their targets) and during a move.
 - 1000 LOAD: simulated 11/23 seconds (instructions / 300 000) and host time.
 """
-import shutil
 import sys
 import tempfile
 import time
-from pathlib import Path
 
 from harness.analysis import servo_timing
-from harness.machine.robot import RATE, Robot
+from harness.machine.build import RATE, fresh_disk
+from harness.machine.robot import Robot
 
-ROOT = Path(__file__).resolve().parents[2]
-DISK = ROOT / "build" / "robot.dsk"
 
 
 def load_time(disk):
@@ -40,8 +37,7 @@ def main():
             print(report.format("Interrupt.Servo"))
         print(servo_timing.summary(label, report))
     with tempfile.TemporaryDirectory() as tmp:
-        disk = Path(tmp) / "load.dsk"
-        shutil.copy(DISK, disk)
+        disk = fresh_disk(tmp, "load.dsk")
         load_time(disk)
     return 0
 

@@ -3,7 +3,7 @@ and the gripper on the emulated robot, on the printed servo and on the
 proposed corrected one (block 1030), in lock-step with simulated time
 (harness/machine/robot.py): the same command gives the same traces and figures.
 
-    python -m harness.bench.continuation_runs OUTDIR [--servo printed|ramp]... [--figures DIR]
+    python -m harness.figures.continuation_runs OUTDIR [--servo printed|ramp]... [--figures DIR]
 
 For each servo, writes OUTDIR/SERVO/square-SPEED.csv (a 4-inch square at
 2400 and 4800 counts/s), points.csv (the same corners by Abs.Move
@@ -16,17 +16,15 @@ draws the docs' figures from those traces into DIR (continuation-SERVO-NAME-xy.p
 """
 import argparse
 import math
-import shutil
 import sys
 import tempfile
 from pathlib import Path
 
 from harness.analysis import path_metrics as pm
 from harness.analysis import trace as tr
+from harness.machine.build import fresh_disk
 from harness.machine.robot import Robot
 
-ROOT = Path(__file__).resolve().parents[2]
-DISK = ROOT / "build" / "robot.dsk"
 PLANE = 400                                  # z of the drawings (block 1060's Plane)
 SIDE = 3200                                  # 4 inches
 SQUARE = [(0, 0), (SIDE, 0), (SIDE, SIDE), (0, SIDE), (0, 0)]
@@ -57,8 +55,7 @@ def vias_text(points, z=PLANE):
 def session(trace, servo, disk_dir, blend=BLEND, sample=60):
     """1000 LOAD, the servo's block, 1040 LOAD, Set.Up.Robot Path.Servo, the
     blend, and z up to the drawing plane at the origin."""
-    disk = Path(disk_dir) / f"{trace.stem}.dsk"
-    shutil.copy(DISK, disk)
+    disk = fresh_disk(disk_dir, f"{trace.stem}.dsk")
     r = Robot(disk=disk, trace=trace, sample=sample, timeout=30)
     r.send("1000 LOAD")
     if SERVO_BLOCK[servo]:

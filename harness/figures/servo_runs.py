@@ -2,7 +2,7 @@
 (and of the proposed block 1030), made in lock-step with simulated time
 (harness/machine/robot.py), so that the same command gives the same traces.
 
-    python -m harness.bench.servo_runs OUTDIR [--block 1030 [--then Ramp.Servo]]
+    python -m harness.figures.servo_runs OUTDIR [--block 1030 [--then Ramp.Servo]]
                                         [--figures STEM]
 
 writes OUTDIR/moves.csv (a long and two short moves on x), OUTDIR/rest.csv (a
@@ -13,16 +13,14 @@ draws the docs' figures (STEM-moves-X.png, STEM-long-time.png, ...) with
 and prints the plot commands, so the windows follow the kernel's timing.
 """
 import argparse
-import shutil
 import sys
 import tempfile
 from pathlib import Path
 
 from harness.commands import plot
+from harness.machine.build import fresh_disk
 from harness.machine.robot import Robot
 
-ROOT = Path(__file__).resolve().parents[2]
-DISK = ROOT / "build" / "robot.dsk"
 # x: 4000 counts (5 in) out, then 150 and 40 counts: one long move, two short
 MOVES = [(4000, 2.0), (4150, 2.0), (4190, 2.0)]
 # the plant's default offsets (DESIGN.md section 3), drawn on the zero figure
@@ -30,8 +28,7 @@ OFFSETS = ("X=3.0", "Y=-2.0", "Z=45.0", "T=0.6")
 
 
 def session(trace, block, then, disk_dir):
-    disk = Path(disk_dir) / f"{trace.stem}.dsk"
-    shutil.copy(DISK, disk)
+    disk = fresh_disk(disk_dir, f"{trace.stem}.dsk")
     r = Robot(disk=disk, trace=trace, sample=1000)
     r.send("1000 LOAD")
     if block:

@@ -1,8 +1,8 @@
 """Hammer the FORTH with random console lines, then drive the robot (issue 8).
 
-    python -m harness.bench.fuzz --lines 10000 --seed 1983     # make fuzz
+    python -m harness.fuzz.console_fuzz --lines 10000 --seed 1983     # make fuzz
 
-Lines come from harness/bench/fuzz_lines.py (seeded) and go to the machine through
+Lines come from harness/fuzz/lines.py (seeded) and go to the machine through
 the lock-step driver (harness/machine/scripted_machine.py), so a run is deterministic.
 Every line must end at the prompt, " ok" or a FORTH error. Counted as failures:
   halt    the simulator stopped (SIMH's sim>), so the machine is rebooted;
@@ -23,17 +23,16 @@ counts are 0 and the move works, else 1.
 import argparse
 import collections
 import re
-import shutil
 import sys
 import tempfile
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from harness.bench.fuzz_lines import EMPTIES_STACK, LineMaker
-from harness.machine.scripted_machine import ROOT, ScriptedMachine
+from harness.fuzz.lines import EMPTIES_STACK, LineMaker
+from harness.machine.build import fresh_disk
+from harness.machine.scripted_machine import ScriptedMachine
 
-DISK = ROOT / "build" / "robot.dsk"
 LINE_LIMIT = 10.0          # simulated seconds; the slowest fuzz lines take well under 1
 PROBE_EVERY = 25
 START_MARKER = "MARKER FUZZ-START"   # the final move forgets the fuzz's words first
@@ -100,8 +99,7 @@ class Fuzzer:
         if self.machine:
             self.machine.close()
         self.boots += 1
-        disk = f"fuzz-{self.boots}.dsk"
-        shutil.copy(DISK, self.workdir / disk)
+        disk = fresh_disk(self.workdir, f"fuzz-{self.boots}.dsk").name
         self.machine = ScriptedMachine(disk, cwd=self.workdir, line_limit=self.line_limit)
         if not (self.machine.line(START_MARKER).ok and self.machine.line(CHECK_WORD).ok):
             raise RuntimeError("the fuzz's check word does not compile on a fresh boot")

@@ -1,4 +1,4 @@
-"""The LAB device's live stream (pdp11-devices/lab.c), parsed as it arrives (pure
+"""The LAB device's live stream (pdp11-devices/lab/lab.c), parsed as it arrives (pure
 logic). Tagged rows: W (watched words at a tick), P (the plant: one axis, the
 plant trace's columns), A (watched addresses), S (state), M (memory dump),
 E (a refused command).

@@ -6,9 +6,9 @@ heads and DP (HERE). When they change (a LOAD, a FORGET) it dumps the dictionary
 finds the servo's words (block 1000's arrays and Dir, defined above the kernel's FENCE) and watches their cells.
 """
 from harness.lab.dictionary import Memory, find_bodies
+from harness.machine.kernel_layout import BODY
 
 ORIGIN = 0o2000                      # the kernel and the dictionary start here
-BODY = 4                             # a kernel VAR's value follows its code field
 PER_AXIS = ("Desire.Pos", "State", "Velocity", "0-Vel", "Command.Status", "MaxVel")
 SINGLE = ("Dir",)
 

@@ -1,6 +1,6 @@
 """The simulator behind the lab page: SIMH on a pty, and the LAB device's stream.
 
-The machine boots as in `make run`, with the LAB device (pdp11-devices/lab.c)
+The machine boots as in `make run`, with the LAB device (pdp11-devices/lab/lab.c)
 attached to a FIFO in a private temporary directory; a second FIFO carries the
 lab's commands (speed, pause, step, watch, dump) to the device. Everything is
 read on the asyncio loop, so the simulator never waits long for a reader.
@@ -18,9 +18,9 @@ import pexpect
 
 from harness.lab.feed import Lines, lab_row
 from harness.machine import simh
-from harness.machine.console_session import KERNEL, RACK_OFF, leave, say
+from harness.machine.build import KERNEL, ROOT
+from harness.machine.console_session import RACK_OFF, leave, say
 from harness.machine.console_watch import Leave, LineWatcher
-from harness.machine.simh import ROOT
 
 SPEEDS = {"real": 1, "x10": 10, "full": 0}
 STOPS = re.compile(rb"^\s+([XYZT])\s+\S+\s+\S+\s+\S+\s+\S+\s+(-?[\d.]+)\s+(-?[\d.]+)\s+\S+\s*$",

@@ -13,11 +13,10 @@ trace), with a FORTH-line interface:
 """
 import re
 
-from harness.machine.machine import KERNEL, ForthError, MachineHalted
-from harness.machine.scripted_machine import KERNEL_MAP as MAP, ScriptedMachine
-from harness.machine.simh import PDP11
+from harness.machine.build import KERNEL, PDP11
+from harness.machine.machine import ForthError, MachineHalted
+from harness.machine.scripted_machine import ScriptedMachine
 
-RATE = 300_000                      # instructions per simulated second (CLK RATE default)
 AXES = "XYZT"
 
 

@@ -16,7 +16,7 @@ Every 5th cycle instead kills the simulator a few host milliseconds after FLUSH
 is typed, while it writes: each edited block may then be old or new, but whole,
 and no other block may change.
 
-    python -m harness.bench.disk_soak [CYCLES]     default 100; exit 1 on any loss
+    python -m harness.soak.disk_soak [CYCLES]     default 100; exit 1 on any loss
 
 tests/disk/test_durability.py runs a short version. Contents change every
 cycle: each edited block is filled with a character and its first cell holds
@@ -24,19 +24,17 @@ the cycle number, so a block left over from an earlier cycle is noticed.
 """
 import os
 import random
-import shutil
 import signal
 import sys
 import tempfile
 import time
 from dataclasses import dataclass, field
-from pathlib import Path
 
 from harness.blocks.blockfile import BLOCK_BYTES
 from harness.blocks.disk import read_image
-from harness.machine.machine import ROOT, Machine
+from harness.machine.build import fresh_disk
+from harness.machine.machine import Machine
 
-PRISTINE = ROOT / "build" / "robot.dsk"
 FIRST = 3000                # the blocks the soak edits: FIRST .. FIRST + SPAN - 1
 SPAN = 8
 EDITS_PER_CYCLE = 2
@@ -179,8 +177,7 @@ def main(argv=None):
     argv = sys.argv[1:] if argv is None else argv
     cycles = int(argv[0]) if argv else 100
     with tempfile.TemporaryDirectory(prefix="soak-disk-") as tmp:
-        image = Path(tmp) / "soak.dsk"
-        shutil.copyfile(PRISTINE, image)
+        image = fresh_disk(tmp, "soak.dsk")
         tally = soak(image, cycles)
     print(report(tally))
     return 1 if tally.lost or tally.corrupted else 0

@@ -7,7 +7,7 @@
    A read returns the code last written. A byte write changes one byte (the
    high byte's bits 15:12 are dropped as above). Power-up and bus INIT set every
    channel to 2048. Every write (and INIT) goes to the plant at once. */
-#include "robot.h"
+#include "devices.h"
 
 #define IOBA_AAV  (IOPAGEBASE + 010440)         /* 170440 */
 #define CODE_MASK 07777

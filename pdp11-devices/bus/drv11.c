@@ -25,7 +25,7 @@
    contact switch is closed (fingers on an object), or-ed with what the
    console set. `SET DRV11 REQA=1` (REQB) drives the line from the console,
    standing for a user device, which is how the interrupt logic is tested. */
-#include "robot.h"
+#include "devices.h"
 
 extern int32 int_req[IPL_HLVL];
 

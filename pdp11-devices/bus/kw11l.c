@@ -40,7 +40,7 @@
        wall-calibrated timer, which this clock never is.)
    Without either (scripted runs) WAIT costs one count per simulated
    instruction time, as in stock SIMH. */
-#include "robot.h"
+#include "devices.h"
 
 extern int32 int_req[IPL_HLVL];
 extern int32 tmr_poll, tmxr_poll;
@@ -81,7 +81,7 @@ static REG kwl_reg[] = {
     { FLDATA (INT, IREQ (CLK), INT_V_CLK) },
     { FLDATA (MON, lks, 7) },
     { FLDATA (IE, lks, 6) },
-    { DRDATA (RATE, robot_rate, 32), PV_LEFT + REG_RO },
+    { DRDATA (RATE, clock_rate, 32), PV_LEFT + REG_RO },
     { DRDATA (TICKS, ticks, 32), PV_LEFT + REG_RO },
     { NULL }
 };
@@ -138,7 +138,7 @@ static t_stat kwl_svc (UNIT *uptr)
     lks |= LKS_MON;
     if (lks & LKS_IE)
         SET_INT (CLK);
-    sim_activate (uptr, robot_share (TICKS_PER_S, &tick_acc));
+    sim_activate (uptr, clock_share (TICKS_PER_S, &tick_acc));
     return SCPE_OK;
 }
 
@@ -146,9 +146,9 @@ static t_stat kwl_reset (DEVICE *dptr)
 {
     lks = 0;
     CLR_INT (CLK);
-    tmr_poll = tmxr_poll = robot_rate / TICKS_PER_S;
+    tmr_poll = tmxr_poll = clock_rate / TICKS_PER_S;
     if (!sim_is_active (&kwl_unit))              /* power-up: start the series */
-        sim_activate (&kwl_unit, robot_share (TICKS_PER_S, &tick_acc));
+        sim_activate (&kwl_unit, clock_share (TICKS_PER_S, &tick_acc));
     return SCPE_OK;
 }
 
@@ -164,14 +164,14 @@ static t_stat kwl_set_rate (UNIT *uptr, int32 val, char *cptr, void *desc)
                 RATE_MIN, RATE_MAX);
         return SCPE_ARG;
     }
-    robot_set_rate ((int32) r);                 /* time_base.c: every device is told */
+    clock_set_rate ((int32) r);                 /* time_base.c: every device is told */
     return SCPE_OK;
 }
 
 void kwl_rate_changed (int32 old_rate)
 {
-    tmr_poll = tmxr_poll = robot_rate / TICKS_PER_S;
-    robot_rescale (&kwl_unit, old_rate);         /* the next tick keeps its time */
+    tmr_poll = tmxr_poll = clock_rate / TICKS_PER_S;
+    clock_rescale (&kwl_unit, old_rate);         /* the next tick keeps its time */
     tick_acc = 0;
 }
 
@@ -186,13 +186,13 @@ static t_stat kwl_set_realtime (UNIT *uptr, int32 val, char *cptr, void *desc)
 
 static t_stat kwl_show_rate (FILE *st, UNIT *uptr, int32 val, void *desc)
 {
-    fprintf (st, "rate=%d instructions/s%s", robot_rate, realtime ? ", realtime" : "");
+    fprintf (st, "rate=%d instructions/s%s", clock_rate, realtime ? ", realtime" : "");
     return SCPE_OK;
 }
 
 static t_stat kwl_show_state (FILE *st, UNIT *uptr, int32 val, void *desc)
 {
     fprintf (st, "LKS=%06o (IE=%d MON=%d), %.0f ticks, time=%.6fs", lks,
-             (lks & LKS_IE) != 0, (lks & LKS_MON) != 0, (double) ticks, robot_time ());
+             (lks & LKS_IE) != 0, (lks & LKS_MON) != 0, (double) ticks, clock_time ());
     return SCPE_OK;
 }

@@ -48,7 +48,7 @@
    loses its writer (the lab server exited) a pause ends by itself.
 
    SET LAB SPEED=X as the command; SHOW LAB: state, speed, watched words. */
-#include "robot.h"
+#include "devices.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -120,7 +120,7 @@ static FILE *out (void)
 static void say_state (void)
 {
     if (out ())
-        fprintf (out (), "S,%.6f,%s,%g,%s\n", robot_time (), paused ? "pause" : "run", speed,
+        fprintf (out (), "S,%.6f,%s,%g,%s\n", clock_time (), paused ? "pause" : "run", speed,
                  plant_dev_powered () ? "on" : "off");
 }
 
@@ -235,7 +235,7 @@ static int read_commands (void)
 
 static void write_sample (void)
 {
-    fprintf (out (), "W,%.6f,%u", robot_time (), tick_no);
+    fprintf (out (), "W,%.6f,%u", clock_time (), tick_no);
     for (int i = 0; i < watch_n; i++)
         fprintf (out (), ",%d", M[watch[i] >> 1]);
     fputc ('\n', out ());
@@ -303,15 +303,15 @@ static void wait_while_paused (void)
    stays exact and every look falls on a tick). */
 static void schedule (UNIT *uptr)
 {
-    int32 n = robot_share (TICKS_PER_S * SUBSAMPLES, &sample_acc);
+    int32 n = clock_share (TICKS_PER_S * SUBSAMPLES, &sample_acc);
     if (!reporting) {
         while (sub < SUBSAMPLES - 1) {              /* to the next tick */
-            n += robot_share (TICKS_PER_S * SUBSAMPLES, &sample_acc);
+            n += clock_share (TICKS_PER_S * SUBSAMPLES, &sample_acc);
             sub++;
         }
         for (int32 k = 1; k < skip; k++) {          /* and over skip - 1 more */
             for (int i = 0; i < SUBSAMPLES; i++)
-                n += robot_share (TICKS_PER_S * SUBSAMPLES, &sample_acc);
+                n += clock_share (TICKS_PER_S * SUBSAMPLES, &sample_acc);
             tick_no++;
         }
     }
@@ -344,7 +344,7 @@ static t_stat lab_svc (UNIT *uptr)
 
 void lab_rate_changed (int32 old_rate)
 {
-    robot_rescale (&lab_unit, old_rate);        /* the next sample keeps its time */
+    clock_rescale (&lab_unit, old_rate);        /* the next sample keeps its time */
     sample_acc = 0;
     rebase ();
 }
@@ -358,7 +358,7 @@ static t_stat lab_attach (UNIT *uptr, char *cptr)
     signal (SIGPIPE, SIG_IGN);                  /* a vanished reader is no reason to stop */
     if ((ctl = (char *) malloc (strlen (cptr) + 5)) == NULL)
         return SCPE_MEM;
-    if ((r = robot_attach_text (uptr, cptr, "LAB: cannot write")) != SCPE_OK) {
+    if ((r = device_attach_text (uptr, cptr, "LAB: cannot write")) != SCPE_OK) {
         free (ctl);
         return r;
     }
@@ -374,7 +374,7 @@ static t_stat lab_attach (UNIT *uptr, char *cptr)
     rebase ();
     say_watch ();
     say_state ();
-    sim_activate (uptr, robot_share (TICKS_PER_S * SUBSAMPLES, &sample_acc));
+    sim_activate (uptr, clock_share (TICKS_PER_S * SUBSAMPLES, &sample_acc));
     return SCPE_OK;
 }
 
@@ -383,7 +383,7 @@ static t_stat lab_detach (UNIT *uptr)
     if (!(uptr->flags & UNIT_ATT))
         return SCPE_OK;
     sim_cancel (uptr);
-    robot_detach_text (uptr);
+    device_detach_text (uptr);
     if (ctl_fd >= 0) close (ctl_fd);
     ctl_fd = -1;
     paused = steps = 0;

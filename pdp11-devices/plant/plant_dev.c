@@ -37,7 +37,7 @@
    grip (opening, inches), contact (0/1), missed (step pulses missed so far). A row for all four axes at every sample (SAMPLE per second,
    at exact instruction counts from the ATTACH) and a row for the axis written
    at every DAC write. Same program, same trace, byte for byte. */
-#include "robot.h"
+#include "devices.h"
 
 #include <errno.h>
 #include <math.h>
@@ -123,7 +123,7 @@ static void hand_position (double hand[3])
 void plant_dev_catch_up (void)
 {
     double hand[3];
-    plant_advance (&robot_plant, robot_time ());
+    plant_advance (&robot_plant, clock_time ());
     if (robot_gripper.part) {                    /* only a placed part cares where the hand is */
         hand_position (hand);
         gripper_hand_at (&robot_gripper, hand);
@@ -157,7 +157,7 @@ void plant_dev_run_lines (int lines)
 void plant_dev_gripper_lines (int step, int dir)
 {
     plant_dev_catch_up ();
-    gripper_lines (&robot_gripper, robot_time (), step, dir);
+    gripper_lines (&robot_gripper, clock_time (), step, dir);
 }
 
 int plant_dev_gripper_contact (void)
@@ -178,7 +178,7 @@ void plant_dev_rate_changing (int32 old_rate)  /* still in the old time */
 
 void plant_dev_rate_changed (int32 old_rate)
 {
-    robot_rescale (&plant_unit, old_rate);
+    clock_rescale (&plant_unit, old_rate);
     sample_acc = 0;
 }
 
@@ -192,7 +192,7 @@ static void schedule_sample (void)
     sim_cancel (&plant_unit);
     sample_acc = 0;
     if ((plant_unit.flags & UNIT_ATT) && sample_hz > 0)
-        sim_activate (&plant_unit, robot_share (sample_hz, &sample_acc));
+        sim_activate (&plant_unit, clock_share (sample_hz, &sample_acc));
 }
 
 static t_stat plant_svc (UNIT *uptr)
@@ -202,7 +202,7 @@ static t_stat plant_svc (UNIT *uptr)
     plant_dev_catch_up ();
     for (int i = 0; i < PLANT_AXES; i++)
         trace_row (i);
-    sim_activate (uptr, robot_share (sample_hz, &sample_acc));
+    sim_activate (uptr, clock_share (sample_hz, &sample_acc));
     return SCPE_OK;
 }
 
@@ -218,7 +218,7 @@ static t_stat plant_attach (UNIT *uptr, char *cptr)
     t_stat r;
     if (uptr->flags & UNIT_ATT)
         plant_detach (uptr);
-    if ((r = robot_attach_text (uptr, cptr, "PLANT: cannot write the trace")) != SCPE_OK)
+    if ((r = device_attach_text (uptr, cptr, "PLANT: cannot write the trace")) != SCPE_OK)
         return r;
     fputs ("time_s,axis,dac,vcmd,vel,pos,counter,grip,contact,missed\n", uptr->fileref);
     plant_dev_catch_up ();
@@ -231,7 +231,7 @@ static t_stat plant_detach (UNIT *uptr)
     if (!(uptr->flags & UNIT_ATT))
         return SCPE_OK;
     sim_cancel (uptr);
-    robot_detach_text (uptr);
+    device_detach_text (uptr);
     return SCPE_OK;
 }
 
@@ -367,7 +367,7 @@ int plant_dev_powered (void)
 static t_stat plant_show_global (FILE *st, UNIT *uptr, int32 val, void *desc)
 {
     fprintf (st, "seed=%llu, sample=%d/s, power=%s, time=%.6fs", (unsigned long long) robot_plant.seed,
-             sample_hz, robot_plant.power ? "on" : "off", robot_time ());
+             sample_hz, robot_plant.power ? "on" : "off", clock_time ());
     return SCPE_OK;
 }
 

@@ -14,7 +14,7 @@
    the program's own pace. The keyboard is polled even then, so ^E (SIMH's stop
    key) always works. A nonzero TTI TIME register overrides the slow interval,
    as in stock SIMH. */
-#include "robot.h"
+#include "devices.h"
 
 extern int32 int_req[IPL_HLVL];
 extern int32 tti_csr;
@@ -60,7 +60,7 @@ static t_stat console_poll_svc (UNIT *uptr)
     }
     if (fifo_count > 0)
         busy = 1;
-    sim_activate (uptr, busy ? robot_share (FAST_PER_S, &fast_acc) : slow_interval (uptr));
+    sim_activate (uptr, busy ? clock_share (FAST_PER_S, &fast_acc) : slow_interval (uptr));
     return SCPE_OK;
 }
 

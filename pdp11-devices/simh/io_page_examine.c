@@ -6,14 +6,14 @@
    SHOW CLK and SHOW DRV11 place their registers): EXAMINE 177546 read the
    8 KB of RAM hidden beneath it instead (000000 while the CPU read LKS as
    000300). Here the CPU device's examine and deposit routines are wrapped at
-   start-up (robot_sys.c): an address in 160000-177777 is taken as the CPU
+   start-up (machine_sys.c): an address in 160000-177777 is taken as the CPU
    takes it, as SIMH's own -V switch does (virtual, relocated; memory
    management off, that is the I/O page). EXAMINE 17777546 and EXAMINE -V
    177546 work as in stock SIMH; every other address is unchanged. Stock SIMH
    builds its table of I/O registers when the CPU starts, so before the first
    GO every I/O address said "Address space exceeded"; the table is built
    here first (SIMH's own build_dib_tab, as each run does). */
-#include "robot.h"
+#include "devices.h"
 
 #define IO_WINDOW_LO 0160000
 #define IO_WINDOW_HI 0200000

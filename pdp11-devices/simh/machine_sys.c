@@ -1,4 +1,4 @@
-/* robot_sys.c: how the project's devices join SIMH 3.8.1 without patching it.
+/* machine_sys.c: how the project's devices join SIMH 3.8.1 without patching it.
 
    Device table. SIMH's scp.c walks sim_devices[] (defined by pdp11_sys.c).
    The build compiles pdp11_sys.c a second time with
@@ -22,14 +22,14 @@
 
    Hooks. scp.c declares `void (*sim_vm_init)(void)` without initialising it
    and calls it first thing in main(); with -fcommon this file's initialised
-   definition is the one linked. robot_vm_init fills the table, replaces the
+   definition is the one linked. machine_vm_init fills the table, replaces the
    console keyboard's service routine (console_pacing.c), wraps the CPU's
    examine and deposit for the I/O page (io_page_examine.c), wraps the RL02
    units' service routine so that a written block is fflush()ed and fsync()ed
    before the controller reports it done (rl_durable.c: FLUSH is durable), and
    installs sim_vm_post, which scp.c calls after every command (used to end a
    SET PLANT axis selection). */
-#include "robot.h"
+#include "devices.h"
 
 #define MAX_DEVICES 96
 
@@ -39,7 +39,7 @@ extern void (*sim_vm_post) (t_bool from_scp);
 
 DEVICE *sim_devices[MAX_DEVICES + 1];
 
-static void robot_vm_post (t_bool from_scp)
+static void machine_vm_post (t_bool from_scp)
 {
     plant_dev_command_done ();
 }
@@ -47,13 +47,13 @@ static void robot_vm_post (t_bool from_scp)
 static void add_device (int *n, DEVICE *d)
 {
     if (*n >= MAX_DEVICES) {
-        fprintf (stderr, "robot_sys: device table full (MAX_DEVICES)\n");
+        fprintf (stderr, "machine_sys: device table full (MAX_DEVICES)\n");
         exit (1);
     }
     sim_devices[(*n)++] = d;
 }
 
-static void robot_vm_init (void)
+static void machine_vm_init (void)
 {
     int n = 0;
     for (int i = 0; stock_sim_devices[i] != NULL; i++)
@@ -65,15 +65,15 @@ static void robot_vm_init (void)
     sim_devices[n] = NULL;
     /* a SET CLK RATE: the plant integrates up to now in the old time; then the
        clock, the plant, the console and the lab keep their events' times */
-    robot_on_rate_change (NULL, &kwl_rate_changed);
-    robot_on_rate_change (&plant_dev_rate_changing, &plant_dev_rate_changed);
-    robot_on_rate_change (NULL, &console_pacing_rate_changed);
-    robot_on_rate_change (NULL, &lab_rate_changed);
+    clock_on_rate_change (NULL, &kwl_rate_changed);
+    clock_on_rate_change (&plant_dev_rate_changing, &plant_dev_rate_changed);
+    clock_on_rate_change (NULL, &console_pacing_rate_changed);
+    clock_on_rate_change (NULL, &lab_rate_changed);
     plant_dev_init ();
     console_pacing_install ();
     io_page_examine_install ();
     rl_durable_install ();
-    sim_vm_post = &robot_vm_post;
+    sim_vm_post = &machine_vm_post;
 }
 
-void (*sim_vm_init) (void) = &robot_vm_init;
+void (*sim_vm_init) (void) = &machine_vm_init;

@@ -31,12 +31,12 @@
    FLUSHed block on the project's shared ext4 host (as busy as its disk),
    against 25-50 us without the write-through (a build with it removed): the
    fsync is nearly all of it.
-   Proof: make soak-disk (harness/bench/disk_soak.py) kills the simulator with
+   Proof: make soak-disk (harness/soak/disk_soak.py) kills the simulator with
    SIGKILL after FLUSH, 100 times, and finds every flushed block. */
 #include <errno.h>
 #include <string.h>
 #include <unistd.h>
-#include "robot.h"
+#include "devices.h"
 
 extern DEVICE rl_dev;
 extern int32 rlcs;

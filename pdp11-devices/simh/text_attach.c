@@ -2,11 +2,11 @@
    (PLANT's trace, LAB's stream): the file is written from its start (an
    existing one is truncated; a FIFO waits for its reader), a failure says
    which device, which file and why, and leaves the unit detached. */
-#include "robot.h"
+#include "devices.h"
 
 #include <errno.h>
 
-t_stat robot_attach_text (UNIT *uptr, char *cptr, const char *what)
+t_stat device_attach_text (UNIT *uptr, char *cptr, const char *what)
 {
     FILE *f;
     char *name;
@@ -25,7 +25,7 @@ t_stat robot_attach_text (UNIT *uptr, char *cptr, const char *what)
     return SCPE_OK;
 }
 
-void robot_detach_text (UNIT *uptr)
+void device_detach_text (UNIT *uptr)
 {
     fclose (uptr->fileref);
     free (uptr->filename);

@@ -10,7 +10,7 @@
    sim>, or the host was slow) it drops the point and takes a new one, so no
    burst follows to catch up. wall_pacer_drop makes the next call take a new
    point (after a pause, or when pacing stops). */
-#include "robot.h"
+#include "devices.h"
 #include <time.h>
 
 #define SLEEP_MIN_S 0.001               /* less ahead than this: not worth a sleep */
@@ -32,7 +32,7 @@ void wall_pacer_pace (wall_pacer *p, double speed, double slack_s)
 {
     double now = wall_seconds (), ahead;
     if (p->held) {
-        ahead = p->wall0 + (robot_time () - p->sim0) / speed - now;
+        ahead = p->wall0 + (clock_time () - p->sim0) / speed - now;
         if (ahead >= SLEEP_MIN_S) {
             double s = ahead > SLEEP_MAX_S ? SLEEP_MAX_S : ahead;
             struct timespec ts = { (time_t) s, (long) ((s - (time_t) s) * 1e9) };
@@ -44,5 +44,5 @@ void wall_pacer_pace (wall_pacer *p, double speed, double slack_s)
     }
     p->held = 1;                                  /* a new reference point: now */
     p->wall0 = now;
-    p->sim0 = robot_time ();
+    p->sim0 = clock_time ();
 }

@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from harness.asmcheck import corpus, gen_corpus, host_asm, pdpy11_ref, simh_disasm
+from tests.asm.asmcheck import corpus, gen_corpus, host_asm, pdpy11_ref, simh_disasm
 
 HERE = Path(__file__).resolve().parent
 ASM = HERE.parent.parent / "forth" / "asm.fs"
@@ -40,7 +40,7 @@ def host(units):
 def test_generated_corpus_is_current(capsys):
     gen_corpus.main()
     assert capsys.readouterr().out == (HERE / "corpus.txt").read_text(), \
-        "regenerate: python -m harness.asmcheck.gen_corpus > tests/asm/corpus.txt"
+        "regenerate: python -m tests.asm.asmcheck.gen_corpus > tests/asm/corpus.txt"
 
 
 def test_corpus_covers_every_instruction(units):

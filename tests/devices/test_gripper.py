@@ -1,6 +1,6 @@
 """The gripper as a PDP-11 program sees it: step pulses on DRV11 OUTBUF bit 4
 (DIR bit 5), the finger contact switch on the CSR's REQ B, SET PLANT GRIPPER,
-SHOW PLANT and the trace's last three columns (pdp11-devices/gripper.h)."""
+SHOW PLANT and the trace's last three columns (pdp11-devices/plant/gripper.h)."""
 import csv
 import subprocess
 from pathlib import Path

@@ -1,6 +1,6 @@
 """SIMH's EXAMINE and DEPOSIT at a project device register's I/O-page address
 (160000-177777, as the CPU addresses it) show and set what the CPU sees
-(pdp11-devices/io_page_examine.c), before the first run as after it."""
+(pdp11-devices/simh/io_page_examine.c), before the first run as after it."""
 import shutil
 
 import pytest

@@ -9,7 +9,8 @@ import sys
 import pexpect
 
 from harness.cli import main
-from harness.lab.launch import ROOT, LabProcess
+from harness.lab.launch import LabProcess
+from harness.machine.build import ROOT
 from tests.run.common import outlived
 
 

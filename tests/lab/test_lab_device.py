@@ -1,4 +1,4 @@
-"""The LAB device (pdp11-devices/lab.c) in build/pdp11: its rows, its commands,
+"""The LAB device (pdp11-devices/lab/lab.c) in build/pdp11: its rows, its commands,
 and that pacing, pausing and stepping leave the machine's run unchanged."""
 import os
 import shutil
@@ -8,9 +8,8 @@ import time
 import pytest
 
 from harness.machine import simh
-from harness.machine.console_session import KERNEL
+from harness.machine.build import KERNEL, PRISTINE_DISK as PRISTINE
 
-PRISTINE = simh.ROOT / "build" / "robot.dsk"
 TYPED = "1000 LOAD\rSet.Up.Robot\r800 800 400 0 Abs.Move\r"
 RUN_INSTRUCTIONS = 4_500_000          # 15 simulated seconds: the load, the set-up, the move
 

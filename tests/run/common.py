@@ -21,7 +21,7 @@ FAILING_FSYNC = "#include <errno.h>\nint fsync (int fd) { errno = EIO; return -1
 
 def failing_fsync_library(directory):
     """A shared library that makes every fsync fail with EIO, for LD_PRELOAD: the
-    host refusing to make a write durable (pdp11-devices/rl_durable.c's error path)."""
+    host refusing to make a write durable (pdp11-devices/simh/rl_durable.c's error path)."""
     if shutil.which("gcc") is None:
         pytest.skip("gcc is needed to build the fsync fault injector")
     source, library = Path(directory) / "fsync_eio.c", Path(directory) / "fsync_eio.so"

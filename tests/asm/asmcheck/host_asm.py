@@ -11,9 +11,10 @@ import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
+from harness.machine.build import ROOT
+
 from .corpus import ORIGIN, forth_for_host
 
-ROOT = Path(__file__).resolve().parents[2]
 FORTH = ROOT / "forth"
 TESTS = ROOT / "tests" / "asm"
 INTEGER = re.compile(r"(?<!\S)(-?\d+)(?!\S)")

@@ -11,11 +11,10 @@ import subprocess
 from pathlib import Path
 
 from harness.blocks import disk
+from harness.machine.build import KERNEL, ROOT
 from harness.machine.machine import Machine
 
-ROOT = Path(__file__).resolve().parents[2]
 BUILD_FS = ROOT / "forth" / "meta" / "build.fs"
-KERNEL = ROOT / "build" / "kernel.lda"
 DRIVER = ROOT / "tests" / "asm" / "resident-driver.fs"
 TARGET_INCLUDE = 's" forth/asm-target.fs" kernel'
 BOOT_LINE = 's" forth/kernel/boot.fs" kernel'

@@ -1,12 +1,11 @@
 """Reference (b): SIMH's own PDP-11 disassembler (EXAMINE -M) reading words back."""
 import re
 import subprocess
-from pathlib import Path
+
+from harness.machine.build import PDP11_STOCK as STOCK
 
 from .corpus import ORIGIN
 
-ROOT = Path(__file__).resolve().parents[2]
-STOCK = ROOT / "build" / "pdp11-stock"
 LINE = re.compile(r"^([0-7]+):\t(.*)$")
 # Spellings SIMH never prints, and the one it prints instead.
 ALIASES = {"BHIS": "BCC", "BLO": "BCS", "R6": "SP", "R7": "PC"}
