@@ -31,11 +31,14 @@ void plant_dev_catch_up (void);                   /* integrate up to now */
 void plant_dev_dac (int axis, int code);          /* AAV11-A wrote a channel */
 void plant_dev_run_lines (int lines);             /* DRV11 OUTBUF bits 3:0 */
 uint16 plant_dev_counter (int axis);              /* DRV11 INBUF */
+extern const char plant_dev_columns[];            /* the plant's row: its CSV header */
+void plant_dev_write_row (FILE *f, int axis);     /* one row (trace, LAB P rows) */
 extern gripper robot_gripper;
 void plant_dev_gripper_lines (int step, int dir);  /* DRV11 OUTBUF bits 4, 5 */
 int plant_dev_gripper_contact (void);             /* DRV11 REQ B */
 void plant_dev_power (int on);                    /* the amplifier rack's switch */
 int plant_dev_powered (void);
+void plant_dev_on_lines_changed (void (*hook) (void));  /* told when a SET moves a line */
 void drv11_lines_changed (void);                  /* REQ lines may have moved */
 void plant_dev_init (void);
 void plant_dev_rate_changing (int32 old_rate);    /* integrate up to now, old time */

@@ -23,6 +23,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
 from harness.analysis.pdp11prog import Program, check_listing      # noqa: E402
 from harness.machine import simh                                  # noqa: E402
 from harness.machine.build import PDP11, PDP11_STOCK, RATE        # noqa: E402
+from harness.machine.plant_rows import AXES                       # noqa: E402
 
 STEPS = 100_000_000                                       # 333 simulated seconds
 ROUNDS = 5
@@ -46,7 +47,7 @@ def program(io, clock=True):
     p.op(f"BR {outer:o}", 0o000400 | ((outer - p.here - 2) // 2 & 0o377))
 
     def servo(h):
-        for axis in range(4):
+        for axis in range(len(AXES)):
             h.mov_imm(axis, csr)
             h.op(f"MOV @#{inbuf:o},R1", 0o013701, inbuf)
             h.op("MOV #3634,R2", 0o012702, 0o3634)        # above 0: -100 codes

@@ -99,7 +99,7 @@ class Lab:
                 asyncio.ensure_future(ws.send_str(text))
 
     def hello(self):
-        return {"t": "hello", "stops": self.sim.stops,
+        return {"t": "hello", "stops": self.sim.stops, "plant": self.sim.plant.message(),
                 "per_axis": PER_AXIS, "single": SINGLE, "status": self.status,
                 "con": self.scrollback.decode("latin-1")}
 

@@ -12,9 +12,10 @@
    Rows, one per line, numbers in decimal:
      W,time_s,tick,w0,w1,...   at every tick: simulated seconds, the tick's
                                number since the attach, the watched words (0..65535)
-     P,time_s,axis,dac,vcmd,vel,pos,counter
-                               the plant, per axis, four times a tick (the
-                               columns of the plant trace, plant_dev.c)
+     P,time_s,axis,dac,vcmd,vel,pos,counter,grip,contact,missed
+                               the plant, per axis, four times a tick: the
+                               plant trace's row (plant_dev_write_row; SHOW
+                               PLANT LAYOUT names its columns)
      A,a0,a1,...               the watched addresses (octal), when they change
      S,time_s,state,speed,power
                                state run|pause, the amplifier rack on|off
@@ -245,10 +246,8 @@ static void write_plant (void)
 {
     plant_dev_catch_up ();
     for (int i = 0; i < PLANT_AXES; i++) {
-        const plant_axis *a = &robot_plant.ax[i];
-        fprintf (out (), "P,%.6f,%c,%d,%.3f,%.3f,%.3f,%d\n", robot_plant.now,
-                 plant_axis_names[i], a->code, plant_vcmd (&robot_plant, i), a->v, a->p,
-                 (int) (int16) plant_counter (&robot_plant, i));
+        fputs ("P,", out ());
+        plant_dev_write_row (out (), i);
     }
 }
 

@@ -30,8 +30,13 @@
    the parameters, then a line for the gripper (opening, object, contact,
    step pulses requested, missed, blocked, pull-out rate, its two lines,
    and where a placed part is).
+   SHOW PLANT LAYOUT (only when named), for programs: the row's columns, then
+   per axis its letter, display unit, counts per unit and end stops:
+     columns time_s,axis,dac,vcmd,vel,pos,counter,grip,contact,missed
+     axis X in 800 -9600 9600
    ATTACH PLANT file.csv: writes the trace (truncating the file), DETACH
-   PLANT closes it. Columns: time_s,axis,dac,vcmd,vel,pos,counter (simulated
+   PLANT closes it. The plant's row (plant_dev_write_row, also the LAB
+   device's P rows): time_s,axis,dac,vcmd,vel,pos,counter (simulated
    seconds, X/Y/Z/T, code, counts/s, counts/s, counts, counter as a signed
    16-bit number), then the gripper's state on every row, whatever the axis:
    grip (opening, inches), contact (0/1), missed (step pulses missed so far). A row for all four axes at every sample (SAMPLE per second,
@@ -52,6 +57,7 @@ gripper robot_gripper;
 static int sel_axis = -1;               /* axis (or SEL_GRIPPER) named earlier in this SET command */
 static int32 sample_hz = DEFAULT_SAMPLE;
 static int32 sample_acc;
+static void (*lines_changed) (void);    /* the bus device whose REQ lines the plant drives */
 
 static t_stat plant_svc (UNIT *uptr);
 static t_stat plant_reset (DEVICE *dptr);
@@ -65,6 +71,7 @@ static t_stat plant_set_sample (UNIT *uptr, int32 val, char *cptr, void *desc);
 static t_stat plant_set_power_switch (UNIT *uptr, int32 val, char *cptr, void *desc);
 static t_stat plant_show_global (FILE *st, UNIT *uptr, int32 val, void *desc);
 static t_stat plant_show_axes (FILE *st, UNIT *uptr, int32 val, void *desc);
+static t_stat plant_show_layout (FILE *st, UNIT *uptr, int32 val, void *desc);
 
 enum { G_OBJECT, G_PULLOUT, G_OPENING, G_PARTX, G_PARTY, G_PARTZ };
 static const char *const gripper_param_names[] = {
@@ -94,6 +101,7 @@ static MTAB plant_mod[] = {
     { MTAB_XTD|MTAB_VDV, 0, NULL, "POWER", &plant_set_power_switch, NULL, NULL },
     { MTAB_XTD|MTAB_VDV, 0, "SETTINGS", NULL, NULL, &plant_show_global, NULL },
     { MTAB_XTD|MTAB_VUN, 0, "AXES", NULL, NULL, &plant_show_axes, NULL },
+    { MTAB_XTD|MTAB_VDV|MTAB_NMO, 0, "LAYOUT", NULL, NULL, &plant_show_layout, NULL },
     { 0 }
 };
 
@@ -130,13 +138,25 @@ void plant_dev_catch_up (void)
     }
 }
 
-static void trace_row (int axis)
+void plant_dev_on_lines_changed (void (*hook) (void))
+{
+    lines_changed = hook;
+}
+
+const char plant_dev_columns[] = "time_s,axis,dac,vcmd,vel,pos,counter,grip,contact,missed";
+
+void plant_dev_write_row (FILE *f, int axis)
 {
     const plant_axis *a = &robot_plant.ax[axis];
-    fprintf (plant_unit.fileref, "%.9f,%c,%d,%.3f,%.3f,%.3f,%d,%.2f,%d,%lu\n", robot_plant.now,
+    fprintf (f, "%.9f,%c,%d,%.3f,%.3f,%.3f,%d,%.2f,%d,%lu\n", robot_plant.now,
              plant_axis_names[axis], a->code, plant_vcmd (&robot_plant, axis), a->v, a->p,
              (int) (int16) plant_counter (&robot_plant, axis), gripper_opening (&robot_gripper),
              gripper_contact (&robot_gripper), robot_gripper.missed);
+}
+
+static void trace_row (int axis)
+{
+    plant_dev_write_row (plant_unit.fileref, axis);
 }
 
 void plant_dev_dac (int axis, int code)
@@ -220,7 +240,7 @@ static t_stat plant_attach (UNIT *uptr, char *cptr)
         plant_detach (uptr);
     if ((r = device_attach_text (uptr, cptr, "PLANT: cannot write the trace")) != SCPE_OK)
         return r;
-    fputs ("time_s,axis,dac,vcmd,vel,pos,counter,grip,contact,missed\n", uptr->fileref);
+    fprintf (uptr->fileref, "%s\n", plant_dev_columns);
     plant_dev_catch_up ();
     schedule_sample ();
     return SCPE_OK;
@@ -305,8 +325,8 @@ static t_stat plant_set_gripper (UNIT *uptr, int32 which, char *cptr, void *desc
         return SCPE_ARG;
     }
     plant_dev_catch_up ();                      /* the part may be at the hand */
-    if (gripper_contact (&robot_gripper) != contact)
-        drv11_lines_changed ();                 /* the contact switch is REQ B */
+    if (gripper_contact (&robot_gripper) != contact && lines_changed)
+        lines_changed ();                       /* the contact switch is REQ B */
     return SCPE_OK;
 }
 
@@ -368,6 +388,16 @@ static t_stat plant_show_global (FILE *st, UNIT *uptr, int32 val, void *desc)
 {
     fprintf (st, "seed=%llu, sample=%d/s, power=%s, time=%.6fs", (unsigned long long) robot_plant.seed,
              sample_hz, robot_plant.power ? "on" : "off", clock_time ());
+    return SCPE_OK;
+}
+
+static t_stat plant_show_layout (FILE *st, UNIT *uptr, int32 val, void *desc)
+{
+    fprintf (st, "columns %s\n", plant_dev_columns);
+    for (int i = 0; i < PLANT_AXES; i++)
+        fprintf (st, "axis %c %s %.9g %.9g %.9g\n", plant_axis_names[i], plant_unit_name (i),
+                 plant_counts_per_unit (i), plant_get_param (&robot_plant, i, P_PMIN),
+                 plant_get_param (&robot_plant, i, P_PMAX));
     return SCPE_OK;
 }
 

@@ -69,6 +69,9 @@ static void machine_vm_init (void)
     clock_on_rate_change (&plant_dev_rate_changing, &plant_dev_rate_changed);
     clock_on_rate_change (NULL, &console_pacing_rate_changed);
     clock_on_rate_change (NULL, &lab_rate_changed);
+    /* the gripper's contact switch is the DRV11's REQ B: the plant, below the
+       bus devices, tells the DRV11 through this hook, not by name */
+    plant_dev_on_lines_changed (&drv11_lines_changed);
     plant_dev_init ();
     console_pacing_install ();
     io_page_examine_install ();

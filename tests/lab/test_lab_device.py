@@ -9,6 +9,7 @@ import pytest
 
 from harness.machine import simh
 from harness.machine.build import KERNEL, PRISTINE_DISK as PRISTINE
+from harness.machine.plant_rows import COLUMNS
 
 TYPED = "1000 LOAD\rSet.Up.Robot\r800 800 400 0 Abs.Move\r"
 RUN_INSTRUCTIONS = 4_500_000          # 15 simulated seconds: the load, the set-up, the move
@@ -50,8 +51,9 @@ def test_rows_and_commands(tmp_path, ctl):
     assert samples[-1][2:] == [str(0o1234), "65535"]
     plant = rows(out, "P")                       # four samples a tick, every axis
     assert [p[1] for p in plant[:8]] == list("XYZTXYZT")
-    assert [p[0] for p in plant[::4][:5]] == ["0.004167", "0.008333", "0.012500",
-                                              "0.016667", "0.020833"]
+    assert [round(float(p[0]), 6) for p in plant[::4][:5]] == [0.004167, 0.008333, 0.0125,
+                                                              0.016667, 0.020833]
+    assert {len(p) for p in plant} == {len(COLUMNS)}  # the plant trace's row, gripper too
     x = plant[0][2:]                             # DAC at zero volts; x drifts on its offset
     assert x[:2] == ["2048", "-58.590"] and float(x[2]) < 0 and x[4] == "0"
 
