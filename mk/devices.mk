@@ -48,6 +48,6 @@ $(BUILD)/gripper_test: tests/devices/gripper_test.c $(DEV_OBJ)/plant/gripper.o
 ALL_PRODUCTS += $(BUILD)/pdp11 $(BUILD)/plant_test $(BUILD)/gripper_test $(BUILD)/pdp11-stock
 
 bench-devices: $(BUILD)/pdp11 $(BUILD)/pdp11-stock venv
-	@$(PY) harness/bench/bench_devices.py
+	@$(PY) -m harness.bench.bench_devices
 BENCHES += bench-devices
 .PHONY: bench-devices

@@ -16,14 +16,11 @@ Prints instructions per host second, the ratios to stock (goal >= 0.9) and the
 real-time factor (simulated seconds per wall second at RATE)."""
 import sys
 import time
-from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
-
-from harness.analysis.pdp11prog import Program, check_listing      # noqa: E402
-from harness.machine import simh                                  # noqa: E402
-from harness.machine.build import PDP11, PDP11_STOCK, RATE        # noqa: E402
-from harness.machine.plant_rows import AXES                       # noqa: E402
+from harness.analysis.pdp11prog import Program, check_listing
+from harness.machine import simh
+from harness.machine.build import PDP11, PDP11_STOCK, RATE
+from harness.machine.plant_rows import AXES
 
 STEPS = 100_000_000                                       # 333 simulated seconds
 ROUNDS = 5

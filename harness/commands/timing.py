@@ -6,6 +6,7 @@ from harness.analysis import servo_timing
 from harness.analysis.timing import CHUNK, TimingError, measure
 from harness.commands.argtypes import count
 from harness.machine import simh
+from harness.machine.build import RATE
 
 ERRORS = (TimingError, simh.SimhError)
 
@@ -61,8 +62,8 @@ def configure(parser):
     parser.add_argument("--end", type=end_condition, default="rti", metavar="rti|ADDR",
                         help="an execution ends with its RTI (default) or with the first "
                         "execution of the instruction at this octal address")
-    parser.add_argument("--instructions", type=count, default=300_000, metavar="N",
-                        help="instructions to run after SETUP (default 300000: one "
+    parser.add_argument("--instructions", type=count, default=RATE, metavar="N",
+                        help=f"instructions to run after SETUP (default {RATE}: one "
                         "simulated second at the default RATE)")
     parser.add_argument("--keyboard", metavar="FILE",
                         help="text the console keyboard receives (default none)")

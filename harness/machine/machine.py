@@ -1,4 +1,6 @@
-"""Drive the emulated PDP-11/23 running the FORTH kernel, through a pty.
+"""The FORTH on build/pdp11 through a pty, a line at a time as a user types it
+(each line lands when the host writes it; scripted_machine.py is the lock-step,
+deterministic driver).
 
     with Machine(disk=path) as m:      # boots to the FORTH prompt
         m.send("1 2 + .")              # -> "3 "   (raises ForthError on an error)

@@ -19,6 +19,7 @@ from harness.machine.build import KERNEL, PDP11, PRISTINE_DISK, fresh_disk
 from harness.machine.scripted_machine import ScriptError, ScriptedMachine
 from harness.machine.simh import SimhError
 
+STEP_KINDS = ("forth", "wait", "simh")      # script.Step.kind
 # what a run reports as the user's error (a bad script, disk, kernel or machine)
 ERRORS = (script.ScriptSyntaxError, ScriptError, SimhError, DiskError)
 
@@ -80,7 +81,12 @@ def _failure(answer):
 
 
 def run_steps(machine, steps, keep_going=False):
-    """Run `steps` in order; stop at the first failure unless keep_going."""
+    """Run `steps` in order; stop at the first failure unless keep_going. A step
+    of a kind the runner does not know is refused (ScriptError) before any runs."""
+    unknown = [s for s in steps if s.kind not in STEP_KINDS]
+    if unknown:
+        raise ScriptError(f"line {unknown[0].lineno}: a step of kind {unknown[0].kind!r}; "
+                          f"a script's steps are {', '.join(STEP_KINDS)}")
     transcript = Transcript()
     transcript.console(machine.boot_output)
     result = Result("")
