@@ -182,7 +182,7 @@ class TimingReport:
             lines.append("not priced (no figure in the tables): " + ", ".join(
                 f"{k} x{v}" for k, v in sorted(self.unpriced.items())))
         lines.append("KDF11-A times, memory management off: DEC KDF11-B User's Guide "
-                     "tables B-4..B-7, as in shared/kdf11-timing.md (harness/analysis/kdf11.py).")
+                     "tables B-4..B-7, as in docs/kdf11-timing.md (harness/analysis/kdf11.py).")
         return "\n".join(lines)
 
 

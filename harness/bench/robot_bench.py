@@ -3,7 +3,7 @@
 
 - Interrupt.Servo per 60 Hz tick: every instruction it executes, from the
   interrupt entry to its RTI, priced with the KDF11-A tables (harness/analysis/kdf11.py,
-  from shared/kdf11-timing.md: basic + source + destination time per
+  from docs/kdf11-timing.md: basic + source + destination time per
   instruction, DEC's KDF11-A timing tables), through harness/timing.measure
   on SIMH's CPU history; idle (no command pending, the axes hunting around
   their targets) and during a move.
@@ -30,7 +30,7 @@ def load_time(disk):
 
 
 def main():
-    print("==> robot servo benchmark (KDF11-A prices: shared/kdf11-timing.md)")
+    print("==> robot servo benchmark (KDF11-A prices: docs/kdf11-timing.md)")
     for case in servo_timing.CASES:
         label, report = servo_timing.measure(case)
         if "-v" in sys.argv:

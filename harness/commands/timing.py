@@ -20,7 +20,7 @@ execution of the instruction at --end. Prints executions, microseconds per execu
 60 Hz tick (with the tick's percentage), and a per-instruction breakdown.
 
 Times: DEC KDF11-B User's Guide tables B-4..B-7 (memory management off), as
-in shared/kdf11-timing.md; an interrupt entry is charged 9.375 us, an estimate
+in docs/kdf11-timing.md; an interrupt entry is charged 9.375 us, an estimate
 (IOT's trap sequence), as the tables give none.
 
 Example: the code that vector 100 (the 60 Hz clock) runs, over 2 simulated s:

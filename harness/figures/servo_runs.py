@@ -23,7 +23,7 @@ from harness.machine.robot import Robot
 
 # x: 4000 counts (5 in) out, then 150 and 40 counts: one long move, two short
 MOVES = [(4000, 2.0), (4150, 2.0), (4190, 2.0)]
-# the plant's default offsets (DESIGN.md section 3), drawn on the zero figure
+# the plant's default offsets (docs/design.md section 3), drawn on the zero figure
 OFFSETS = ("X=3.0", "Y=-2.0", "Z=45.0", "T=0.6")
 
 

@@ -1,5 +1,5 @@
 /* aav11.c: AAV11-A four-channel D/A converter (SIMH device AAV11), the axes'
-   velocity commands (DESIGN.md section 2). No interrupts.
+   velocity commands (docs/design.md section 2). No interrupts.
 
    170440 DAC x, 170442 DAC y, 170444 DAC z, 170446 DAC t
      bits 11:0  code, offset binary: 0 = -10.000 V, 2048 = 0 V, 4095 = +9.995 V

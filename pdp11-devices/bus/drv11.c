@@ -1,5 +1,5 @@
 /* drv11.c: DRV11 parallel interface (SIMH device DRV11), wired as the robot's
-   encoder-counter multiplexer (DESIGN.md section 2).
+   encoder-counter multiplexer (docs/design.md section 2).
 
    167770 CSR   bits 1:0  CSR1, CSR0  read/write: multiplexer select
                                       0 = x, 1 = y, 2 = z, 3 = t

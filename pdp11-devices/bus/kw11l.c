@@ -1,6 +1,6 @@
 /* kw11l.c: KW11-L line clock (SIMH device CLK); SET CLK RATE sets the time base.
 
-   Register (DESIGN.md section 2), 177546 LKS, vector 100, BR6:
+   Register (docs/design.md section 2), 177546 LKS, vector 100, BR6:
      bit 7  MONITOR  set by every tick; cleared by writing a 0 to it (a 1
                      written leaves it as it is); 0 at power-up and bus INIT
      bit 6  INT ENB  read/write; 0 at power-up and bus INIT

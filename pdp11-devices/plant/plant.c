@@ -10,7 +10,7 @@ const char *const plant_param_names[P_COUNT] = {
 };
 const char plant_axis_names[PLANT_AXES] = { 'X', 'Y', 'Z', 'T' };
 
-/* DESIGN.md section 3 defaults. vmax: 3000 rpm = 40 000 counts/s, the
+/* docs/design.md section 3 defaults. vmax: 3000 rpm = 40 000 counts/s, the
    amplifier's full scale (Kv * 2048). walk: chosen by this project, small
    enough that drift stays within a code or two over an hour. */
 static const struct { double tau_ms, amax, offset, pmin, pmax; } defaults[PLANT_AXES] = {

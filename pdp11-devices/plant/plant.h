@@ -1,4 +1,4 @@
-/* plant.h: the four axes of the 1983 Cartesian robot (DESIGN.md section 3).
+/* plant.h: the four axes of the 1983 Cartesian robot (docs/design.md section 3).
 
    Pure, deterministic physics with no SIMH types, so it can be tested alone
    (plant_test.c). Time is in simulated seconds, positions in encoder counts,

@@ -4,7 +4,7 @@ Each line pairs the FORTH (destination-first) text with the MACRO-11 text of the
 same instruction, so the two cannot drift apart; the three independent checks
 (pdpy11, SIMH, the host assembler) then judge both sides. The operand order of
 the pairs is written out here once; tests/asm/handwritten.txt pins it down by
-hand with the examples of DESIGN.md and the appendix blocks.
+hand with the examples of docs/design.md and the appendix blocks.
 
     python -m tests.asm.asmcheck.gen_corpus > tests/asm/corpus.txt
 """
