@@ -1,14 +1,13 @@
 """The LAB device (pdp11-devices/lab/lab.c) in build/pdp11: its rows, its commands,
 and that pacing, pausing and stepping leave the machine's run unchanged."""
 import os
-import shutil
 import threading
 import time
 
 import pytest
 
 from harness.machine import simh
-from harness.machine.build import KERNEL, PRISTINE_DISK as PRISTINE
+from harness.machine.build import KERNEL, fresh_disk
 from harness.machine.plant_rows import COLUMNS
 
 TYPED = "1000 LOAD\rSet.Up.Robot\r800 800 400 0 Abs.Move\r"
@@ -77,8 +76,7 @@ def test_set_lab_speed_refuses_bad_values_and_keeps_the_old_one(tmp_path):
 
 
 def run_servo(tmp_path, name, lab=None, ctl_commands=None):
-    disk = tmp_path / f"{name}.dsk"
-    shutil.copyfile(PRISTINE, disk)
+    disk = fresh_disk(tmp_path, f"{name}.dsk")
     trace = tmp_path / f"{name}.csv"
     script = (f"attach rl0 {disk}\nattach plant {trace}\n"
               + (f"attach lab {lab}\n" if lab else "")

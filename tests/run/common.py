@@ -6,10 +6,7 @@ from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[2]
-PRISTINE = ROOT / "build" / "robot.dsk"
-SIMULATOR = ROOT / "build" / "pdp11"
-KERNEL = ROOT / "build" / "kernel.lda"
+from harness.machine.build import KERNEL, PDP11 as SIMULATOR, PRISTINE_DISK as PRISTINE, ROOT  # noqa: F401 (shared)
 
 needs_build = pytest.mark.skipif(
     not all(p.is_file() for p in (PRISTINE, SIMULATOR, KERNEL)),
