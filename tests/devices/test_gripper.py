@@ -5,7 +5,7 @@ import csv
 import subprocess
 from pathlib import Path
 
-from harness.analysis.pdp11prog import examine_results, results
+from programs import examine_results, results
 from harness.machine import simh
 from harness.machine.plant_rows import parse_show_gripper
 import programs

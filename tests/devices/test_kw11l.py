@@ -2,7 +2,7 @@
 second, interrupts at vector 100 only with IE set and priority below 6."""
 import pytest
 
-from harness.analysis.pdp11prog import results, examine_results
+from programs import examine_results, results
 from harness.machine import simh
 import programs
 
