@@ -123,7 +123,7 @@ class Lab:
     def on_message(self, message):
         kind = message.get("t")
         if kind == "key" and isinstance(message.get("d"), str):
-            self.sim.keys(message["d"].encode("latin-1", "replace"))
+            self.sim.page_keys(message["d"].encode("latin-1", "replace"))
         elif kind == "speed" and message.get("v") in SPEEDS:
             self.status["speed"] = message["v"]
             self.sim.command(f"speed {SPEEDS[message['v']]}")

@@ -16,6 +16,7 @@ from pathlib import Path
 import pexpect
 
 from harness.lab.feed import Lines, lab_row
+from harness.lab.sim_prompt_guard import SimPromptGuard, prompt_termios
 from harness.machine import plant_rows, simh
 from harness.machine.build import KERNEL, ROOT
 from harness.machine.console_session import RACK_OFF, leave, say
@@ -42,6 +43,7 @@ class Simulator:
         self.simulator, self.disk, self.speed = simulator, disk, speed
         self.tmp = tempfile.TemporaryDirectory(prefix="lab-")
         self.watcher = LineWatcher()
+        self.guard = SimPromptGuard(self.watcher)     # the page's keys pass through it
         self.child = None
         self.fds = {}
         self.leaving = False
@@ -61,7 +63,8 @@ class Simulator:
         ini = tmp / "lab.ini"
         ini.write_text(boot_script(self.disk, lab_fifo, SPEEDS[self.speed]))
         self.child = pexpect.spawn(str(self.simulator), [str(ini)], timeout=None,
-                                   dimensions=(24, 80), cwd=str(ROOT))
+                                   dimensions=(24, 80), cwd=str(ROOT),
+                                   preexec_fn=prompt_termios)
         self.child.delaybeforesend = None
         lab_lines = Lines()
         console, lab, _ = self.callbacks
@@ -76,8 +79,11 @@ class Simulator:
         self.fds["pty"] = self.child.child_fd
 
         def read_console(data):
+            at_prompt = self.watcher.at_simh
             self.watcher.output(data)             # is SIMH's sim> up?
             console(data)
+            if self.watcher.at_simh and not at_prompt:
+                self.page_keys(b"")               # the page's keys that waited for it
         self._watch(loop, "pty", read_console)
 
     def _watch(self, loop, name, handle):
@@ -109,17 +115,43 @@ class Simulator:
 
     # ---- from the page ------------------------------------------------------------
     def keys(self, data):
-        """What the user typed; a way out (BYE, ^D, ^C or QUIT at sim>:
-        harness/machine/console_watch.py) starts leaving, as the console does."""
+        """What the user typed at the lab's own shell: the full SIMH console. A way
+        out (BYE, ^D, ^C or QUIT at sim>: harness/machine/console_watch.py) starts
+        leaving, as the console does. At sim> its Enter (CR) goes as the LF that
+        ends a line there (prompt_termios)."""
         if self.leaving:
             return
+        typed = bytearray()
         try:
-            self.watcher.feed(data)
+            for byte in data:
+                at_prompt = self.watcher.at_simh
+                self.watcher.feed(bytes([byte]))
+                typed.append(10 if at_prompt and byte == 13 else byte)
         except Leave as way:
-            os.write(self.child.child_fd, way.typed)     # typed ahead of the way out
+            os.write(self.child.child_fd, bytes(typed))    # typed ahead of the way out
             asyncio.get_running_loop().create_task(self.close(way.how))
             return
-        os.write(self.child.child_fd, data)
+        os.write(self.child.child_fd, bytes(typed))
+
+    def page_keys(self, data):
+        """What the page typed: through the guard (harness/lab/sim_prompt_guard.py),
+        which lets only the page's commands reach sim>."""
+        if self.leaving or self.child is None:
+            return
+        try:
+            actions = self.guard.keys(data)
+        except Leave as way:
+            self._act(way.actions)
+            asyncio.get_running_loop().create_task(self.close(way.how))
+            return
+        self._act(actions)
+
+    def _act(self, actions):
+        for kind, data in actions:
+            if kind == "pty":
+                os.write(self.child.child_fd, data)
+            else:
+                self.page(data)
 
     def command(self, text):
         """A line to the LAB device (speed X, pause, run, step, watch, dump)."""

@@ -131,11 +131,12 @@ def bye_halt(kernel=KERNEL):
 
 def _to_forth_prompt(child, gone, busy_wait):
     """Bring the FORTH to its prompt; 0 at the prompt, 2 no answer, 3 exited."""
-    child.send(CTRL_U + b"\r")                   # an empty line: who answers?
+    child.send(CTRL_U + b"\r\n")                # an empty line: who answers? (the FORTH
+                                                 # takes CR LF as one line end; sim> may end lines on LF only)
     i = child.expect([b" ok\r\n", b"sim> ", pexpect.TIMEOUT, pexpect.EOF,
                       b" compiled\r\n"], timeout=busy_wait)
     if i == 1:                                   # SIMH had the machine stopped
-        child.send(b"cont\r")
+        child.send(b"cont\n")
         return probe_prompt(child)
     if i == 4:                                   # FLUSH typed now would be compiled
         gone.notes.append("A definition was still open: ^C discarded it so that "
@@ -167,7 +168,7 @@ def _flush(child):
 
 
 def _simh(child, command):
-    child.send(command.encode() + b"\r")
+    child.send(command.encode() + b"\n")          # LF ends a sim> line on any terminal
     child.expect(b"sim> ", timeout=15)
     return child.before.decode("latin-1")
 
@@ -208,7 +209,7 @@ def leave(child, disk, trace, kernel=KERNEL, busy_wait=BUSY_WAIT, devices=(), ec
         for unit in (("plant",) if trace else ()) + tuple(devices):
             _detach(child, unit)
         gone.detach = _detach(child, "rl0")
-        child.send(b"quit\r")
+        child.send(b"quit\n")
         child.expect(pexpect.EOF, timeout=15)
     except (pexpect.TIMEOUT, pexpect.EOF) as err:
         gone.notes.append(f"the simulator stopped answering while leaving "
