@@ -33,8 +33,8 @@ WHY_NOT = {
     "IDEPOSIT": "reads further input from the console",
 }
 # SET's devices the page may set, with their modifier tables in SIMH's order
-# (scp.c set_cmd matches the typed word as a prefix of each, first match wins):
-# CPU from simh-3.8.1/PDP11/pdp11_cpu.c cpu_mod, the others from pdp11-devices/.
+# (scp.c set_cmd matches the typed word as a prefix of each, first match wins), as
+# `SHOW dev MODIFIERS` lists them (tests/lab/test_sim_commands.py compares).
 CPU_MODIFIERS = (
     "11/03", "11/04", "11/05", "11/20", "11/23", "11/23+", "11/24", "11/34", "11/40",
     "11/44", "11/45", "11/53", "11/60", "11/70", "11/73", "11/73B", "11/83", "11/84",
@@ -45,8 +45,9 @@ CPU_MODIFIERS = (
     "HISTORY")
 SETTABLE = {   # device: (its modifiers in table order, those the page may set)
     "CPU": (CPU_MODIFIERS, {"HISTORY"}),
-    "PLANT": (("X", "Y", "Z", "T", "GRIPPER", "OBJECT", "PULLOUT", "OPENING", "PARTX",
-               "PARTY", "PARTZ", "SEED", "SAMPLE", "POWER"), None),     # None: all
+    "PLANT": (("X", "Y", "Z", "T", "KV", "TAU", "AMAX", "VMAX", "OFFSET", "PMIN", "PMAX",
+               "WALK", "POS", "GRIPPER", "OBJECT", "PULLOUT", "OPENING", "PARTX", "PARTY",
+               "PARTZ", "SEED", "SAMPLE", "POWER"), None),     # None: all
     "CLK": (("RATE", "REALTIME", "NOREALTIME"), None),
     "LAB": (("SPEED",), None),
 }
@@ -57,7 +58,7 @@ SETTABLE = {   # device: (its modifiers in table order, those the page may set)
 FILE_DEVICES = ("PTR", "PTP", "CR", "LPT", "DZ", "VH", "RC", "RF", "RK", "RL", "HK",
                 "RX", "RY", "RP", "RQ", "RQB", "RQC", "RQD", "TC", "TM", "TS", "TQ",
                 "TU", "TA", "XQ", "XQB", "XU", "XUB", "DLI", "DLO", "DCI", "DCO")
-REGISTER_DEVICES = ("CPU", "SYSTEM", "PCLK", "CLK", "TTI", "TTO", "KE", "KG", "DRV11",
+REGISTER_DEVICES = ("CPU", "SYSTEM", "RHA", "RHB", "PCLK", "CLK", "TTI", "TTO", "KE", "KG", "DRV11",
                     "AAV11", "PLANT", "LAB")
 
 
