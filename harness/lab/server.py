@@ -107,6 +107,7 @@ class Lab:
         while not self.done.is_set():
             await asyncio.sleep(frame_interval(self.status["speed"]))
             rows, self.rows = thin(self.rows, ROWS_PER_FRAME), []
+            self.status["prompt"] = self.sim.watcher.at_simh     # SIMH's sim>: stopped
             state = json.dumps([self.status, self.servo])
             if self.pages and news(rows, state, self.sent):
                 self.broadcast({"t": "data", "rows": rows, "status": self.status,

@@ -37,7 +37,8 @@ def test_a_move_shows_on_the_robot_and_the_scope(page):
     assert js(page, "window.lab.status.power") == "off"       # booted as make run does
     click(page, "#power")                            # the servo holds the axes: rack on
     wait_for("the amplifiers on", lambda: js(page, "window.lab.status.power") == "on")
-    assert page.find_element(By.ID, "power").text == "Amplifiers ON"
+    power = page.find_element(By.ID, "power")     # labelled with what a click does
+    assert power.text == "Amplifiers off" and power.get_attribute("aria-pressed") == "true"
     robot_before = js(page, "document.getElementById('robot').toDataURL()")
     start = js(page, "window.lab.latest.map(r => r[5])")
     click(page, '#speeds button[data-speed="real"]')  # the scope's 30 s keep the whole move
@@ -80,8 +81,24 @@ def test_pause_holds_simulated_time_and_step_is_one_tick(page):
     click(page, '#axes button[data-axis="0"]')       # x's hunting, tick by tick
     click(page, '#windows button[data-window="2"]')
     page.save_screenshot(str(ARTIFACTS / "lab.png"))
+    textarea = page.find_element(By.CSS_SELECTOR, "#terminal textarea")
+    textarea.send_keys("1 1 + .")                    # typed while paused: shown, waiting
+    shown = wait_for("the typed-ahead line", lambda: page.find_element(By.ID, "typed-ahead"))
+    assert shown.is_displayed() and "1 1 + ." in shown.text
     click(page, "#pause")                            # now reads "Run"
     wait_for("the run to go on", lambda: js(page, "window.lab.status.time") > stepped["time"])
+    assert not page.find_element(By.ID, "typed-ahead").is_displayed()
+    assert "1 1 + . 2  ok" in type_line(page, "")
+
+
+def test_the_badge_says_when_simh_has_the_machine_stopped(page):
+    textarea = page.find_element(By.CSS_SELECTOR, "#terminal textarea")
+    textarea.send_keys("\x05")
+    wait_for("the badge", lambda: page.find_element(By.ID, "state").text == "STOPPED sim>")
+    screen = type_line(page, "attach lpt /tmp/x", answer="lab: refused")
+    assert "ATTACH opens a host file" in screen
+    textarea.send_keys("cont\n")
+    wait_for("the badge", lambda: page.find_element(By.ID, "state").text.startswith("RUN"))
 
 
 def test_bye_in_the_page_leaves_and_flushes(page, lab_server):

@@ -44,7 +44,7 @@ function fitTerminal() {           // the largest font that shows the FORTH's 80
   fit.fit();
 }
 fitTerminal();
-term.onData((d) => send({ t: "key", d }));
+term.onData((d) => { typedAhead.key(d, lab.status); send({ t: "key", d }); });
 term.focus();
 lab.screen = () => {               // the terminal's text, for tests
   const b = term.buffer.active, lines = [];
@@ -124,13 +124,18 @@ function drawStatus() {
   document.getElementById("simtick").textContent = `tick ${s.tick} \u00b7 60 Hz`;
   if (!lab.ended) {
     const speedText = { real: "\u00d71", x10: "\u00d710", full: "FULL" }[s.speed] || "";
-    if (s.state === "pause") setBadge("pause", "PAUSED");
+    if (s.prompt) setBadge("pause", "STOPPED sim>");   // SIMH has the machine stopped
+    else if (s.state === "pause") setBadge("pause", "PAUSED");
     else setBadge("run", `RUN ${speedText}`);
   }
   document.getElementById("pause").textContent = s.state === "pause" ? "Run" : "Pause";
   const power = document.getElementById("power");
-  power.textContent = s.power === "on" ? "Amplifiers ON" : "Amplifiers OFF";
+  power.textContent = s.power === "on" ? "Amplifiers off" : "Amplifiers on";  // what a click does
+  power.title = `the amplifier rack is ${s.power.toUpperCase()}: click to switch it ` +
+    `${s.power === "on" ? "off" : "on"} (SET PLANT POWER)`;
+  power.setAttribute("aria-pressed", String(s.power === "on"));
   power.classList.toggle("on", s.power === "on");
+  typedAhead.status(s);
   document.querySelectorAll("#speeds button").forEach((b) =>
     b.classList.toggle("on", b.dataset.speed === s.speed));
 }
