@@ -15,6 +15,7 @@ from aiohttp import WSMsgType, web
 
 from harness.lab import guard, shell_terminal
 from harness.lab.feed import plant_row, thin, words_of
+from harness.lab.rack_hint import RackHint
 from harness.lab.servo_watch import PER_AXIS, SINGLE, ServoWatch
 from harness.lab.session import SPEEDS, Simulator
 from harness.machine.build import BUILD
@@ -43,6 +44,7 @@ class Lab:
                              speed, page=self.to_pages)
         self.shell_echo = None           # the shell's terminal, when it types too
         self.watch = ServoWatch(symbols)
+        self.rack_hint = RackHint()
         self.pages = set()
         self.scrollback = bytearray()
         self.rows = []
@@ -72,6 +74,9 @@ class Lab:
         elif row.kind == "W":
             self.status["time"], self.status["tick"], words = words_of(row)
             self.servo = self.watch.values(words)
+            hint = self.rack_hint.update(self.status["power"], self.status["time"], self.servo)
+            if hint:
+                self.on_console(f"\r\n{hint}\r\n".encode())
         elif row.kind == "M":
             for command in self.watch.on_memory(*words_of(row)):
                 self.sim.command(command)

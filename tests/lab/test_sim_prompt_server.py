@@ -219,3 +219,20 @@ def test_simh_never_ends_a_line_on_cr_at_its_prompt(line, tmp_path):
         child.expect(pexpect.EOF)
     finally:
         child.close(force=True)
+
+
+def test_a_move_waiting_on_the_rack_off_gets_a_hint(lab_server):
+    """The lab boots with the amplifier rack off; Move.Complete? then waits for
+    ever: the console says why after two simulated seconds (harness/lab/rack_hint.py)."""
+    async def steps(page):
+        for line in ("1000 LOAD", "Set.Up.Robot"):
+            start = len(page.screen)
+            await page.type(line + "\r")
+            await page.until(r"ok\r\n", start)
+        start = len(page.screen)
+        await page.type("800 0 0 0 Abs.Move Move.Complete?\r")
+        text = await page.until(r"rack is OFF[^\n]*\n", start)
+        await page.type("\x03")                      # ^C stops the wait
+        await page.until(r"interrupted", start)
+        return text
+    assert "Move.Complete? waits for ever" in session(lab_server, steps)
