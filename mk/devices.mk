@@ -47,7 +47,7 @@ $(BUILD)/gripper_test: tests/devices/gripper_test.c $(DEV_OBJ)/plant/gripper.o
 # pdp11-stock too: the reference the benchmark and tests/test_simh_stock.py use.
 ALL_PRODUCTS += $(BUILD)/pdp11 $(BUILD)/plant_test $(BUILD)/gripper_test $(BUILD)/pdp11-stock
 
-bench-devices: $(BUILD)/pdp11 $(BUILD)/pdp11-stock venv
+bench-devices: $(BUILD)/pdp11 $(BUILD)/pdp11-stock venv  ## the C devices' cost against the stock simulator
 	@$(PY) -m harness.bench.bench_devices
 BENCHES += bench-devices
 .PHONY: bench-devices

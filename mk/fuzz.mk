@@ -6,7 +6,7 @@
 FUZZ_LINES ?= 10000
 FUZZ_SEED  ?= 1983
 
-fuzz: $(BUILD)/pdp11 $(BUILD)/kernel.lda $(BUILD)/kernel.map $(BUILD)/robot.dsk venv
+fuzz: $(BUILD)/pdp11 $(BUILD)/kernel.lda $(BUILD)/kernel.map $(BUILD)/robot.dsk venv  ## FUZZ_LINES random lines at the FORTH console (not in make test)
 	@$(PY) -m harness.fuzz.console_fuzz --lines $(FUZZ_LINES) --seed $(FUZZ_SEED)
 
 .PHONY: fuzz

@@ -7,13 +7,13 @@
 #                            share of a core (part of make bench)
 HARNESS_NEEDS := $(BUILD)/pdp11 $(BUILD)/kernel.lda $(BUILD)/kernel.map $(PRISTINE_DSK) venv
 
-regression: $(HARNESS_NEEDS)
+regression: $(HARNESS_NEEDS)  ## the regression scenarios against their goldens
 	@$(PY) -m harness regress
 
-regression-update: $(HARNESS_NEEDS)
+regression-update: $(HARNESS_NEEDS)  ## re-record the regression goldens
 	@$(PY) -m harness regress --update
 
-bench-harness: $(HARNESS_NEEDS)
+bench-harness: $(HARNESS_NEEDS)  ## the harness's figures: make test's time, real-time factor, idle console's CPU
 	@$(PY) -m harness.bench.run_bench
 
 BENCHES += bench-harness
