@@ -38,7 +38,7 @@ def test_a_move_shows_on_the_robot_and_the_scope(page):
     click(page, "#power")                            # the servo holds the axes: rack on
     wait_for("the amplifiers on", lambda: js(page, "window.lab.status.power") == "on")
     power = page.find_element(By.ID, "power")     # labelled with what a click does
-    assert power.text == "Amplifiers off" and power.get_attribute("aria-pressed") == "true"
+    assert power.text == "Turn amps off" and power.get_attribute("aria-pressed") == "true"
     robot_before = js(page, "document.getElementById('robot').toDataURL()")
     start = js(page, "window.lab.latest.map(r => r[5])")
     click(page, '#speeds button[data-speed="real"]')  # the scope's 30 s keep the whole move
@@ -56,6 +56,13 @@ def test_a_move_shows_on_the_robot_and_the_scope(page):
     end = js(page, "window.lab.latest.map(r => r[5])")
     assert all(abs(e - s - moved) < 150 for s, e, moved in zip(start, end, (800, 800, 400)))
     assert js(page, "document.getElementById('robot').toDataURL()") != robot_before
+    view = js(page, "window.lab.robotView")           # the robot panel: the move's trail,
+    assert view["trail"] > 100 and view["origin"] is not None     # the zero it counts from,
+    assert view["targets"][-1]["d"] == [800, 800, 400, 0]         # the target, the fingers
+    assert view["fingers"] == {"opening": 2.0, "held": False}
+    origin = view["origin"]                           # Set.Up.Robot's zero: position - counter
+    x = js(page, "window.lab.latest[0]")
+    assert abs(origin[0] - (x[5] - x[6])) < 1.5     # the counter is the position, whole
     click(page, "#pause")
     wait_for("the pause", lambda: js(page, "window.lab.status.state") == "pause")
     click(page, '#windows button[data-window="30"]')
@@ -89,6 +96,33 @@ def test_pause_holds_simulated_time_and_step_is_one_tick(page):
     wait_for("the run to go on", lambda: js(page, "window.lab.status.time") > stepped["time"])
     assert not page.find_element(By.ID, "typed-ahead").is_displayed()
     assert "1 1 + . 2  ok" in type_line(page, "")
+
+
+@pytest.mark.parametrize("width, height", [(1280, 720), (1920, 1080)])
+def test_the_page_fits_both_projectors_without_scrolling(page, width, height):
+    """Each panel present, nothing scrolls, at both projector sizes; the screenshots
+    (build/test-artifacts/lab-WIDTH.png) are looked at by eye."""
+    if width == 1280:                                # a longer move, for the trail to show
+        type_line(page, "3200 -2400 400 0 Abs.Move")
+        wait_for("the move", lambda: js(page, "window.lab.latest[0][6]") > 3000)
+    page.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",
+                         {"width": width, "height": height, "deviceScaleFactor": 1, "mobile": False})
+    try:
+        wait_for("the layout", lambda: js(page, "window.innerWidth") == width)
+        page.execute_script("window.dispatchEvent(new Event('resize'))")
+        page.execute_script("return new Promise(r => setTimeout(r, 300))")
+        scroll = js(page, "[document.documentElement.scrollWidth, document.documentElement.scrollHeight]")
+        assert scroll[0] <= width and scroll[1] <= height, scroll
+        for panel in ("console-panel", "robot-panel", "servo-panel", "scope-panel"):
+            box = js(page, f"document.getElementById('{panel}').getBoundingClientRect().toJSON()")
+            assert box["width"] > 200 and box["height"] > 150, (panel, box)
+            assert box["right"] <= width and box["bottom"] <= height, (panel, box)
+        header = js(page, "[...document.querySelectorAll('header button')]"
+                          ".map(b => b.getBoundingClientRect().right)")
+        assert max(header) <= width, "a header button is cut off"
+        page.save_screenshot(str(ARTIFACTS / f"lab-{width}.png"))
+    finally:
+        page.execute_cdp_cmd("Emulation.clearDeviceMetricsOverride", {})
 
 
 def test_the_badge_says_when_simh_has_the_machine_stopped(page):
