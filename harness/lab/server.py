@@ -15,11 +15,13 @@ from aiohttp import WSMsgType, web
 
 from harness.lab import guard, shell_terminal
 from harness.lab.feed import plant_row, thin, words_of
+from harness.lab.front_panel import PANEL_WORDS, WordIndex, panel
 from harness.lab.rack_hint import RackHint
 from harness.lab.servo_watch import PER_AXIS, SINGLE, ServoWatch
 from harness.lab.session import SPEEDS, Simulator
 from harness.machine.build import BUILD
 from harness.machine.console_session import quiet_stdout
+from harness.machine.kernel_layout import BODY
 
 STATIC = Path(__file__).resolve().parent / "static"
 NODE_MODULES = BUILD / "lab" / "node_modules"
@@ -45,6 +47,9 @@ class Lab:
         self.shell_echo = None           # the shell's terminal, when it types too
         self.watch = ServoWatch(symbols)
         self.rack_hint = RackHint()
+        self.words = WordIndex({address: name for name, address in symbols.items()})
+        self.panel_command = "panel " + " ".join(f"{symbols[name] + BODY:o}" for name in PANEL_WORDS)
+        self.panel = None                # the 11/23's front panel (front_panel.py)
         self.pages = set()
         self.scrollback = bytearray()
         self.rows = []
@@ -82,6 +87,9 @@ class Lab:
                 self.sim.command(command)
         elif row.kind == "A":
             self.watch.on_addresses([int(a, 8) for a in row.fields])
+            self.words.learn(self.watch.memory, self.watch.vocabulary)   # a fresh dictionary
+        elif row.kind == "R":
+            self.panel = panel(row.fields, self.words)
         elif row.kind == "S":
             self.status["time"] = float(row.fields[0])
             self.status["state"] = row.fields[1]
@@ -113,13 +121,14 @@ class Lab:
             await asyncio.sleep(frame_interval(self.status["speed"]))
             rows, self.rows = thin(self.rows, ROWS_PER_FRAME), []
             self.status["prompt"] = self.sim.watcher.at_simh     # SIMH's sim>: stopped
-            state = json.dumps([self.status, self.servo])
+            state = json.dumps([self.status, self.servo, self.panel])
             if self.pages and news(rows, state, self.sent):
                 self.broadcast({"t": "data", "rows": rows, "status": self.status,
-                                "servo": self.servo})
+                                "servo": self.servo, "panel": self.panel})
                 self.sent = state
 
     async def probes(self):
+        self.sim.command(self.panel_command)     # R rows from now on
         while not self.done.is_set():
             for command in self.watch.probe():
                 self.sim.command(command)

@@ -94,7 +94,8 @@ def test_pause_holds_simulated_time_and_step_is_one_tick(page):
     assert shown.is_displayed() and "1 1 + ." in shown.text
     click(page, "#pause")                            # now reads "Run"
     wait_for("the run to go on", lambda: js(page, "window.lab.status.time") > stepped["time"])
-    assert not page.find_element(By.ID, "typed-ahead").is_displayed()
+    wait_for("the typed-ahead line to go",
+             lambda: not page.find_element(By.ID, "typed-ahead").is_displayed())
     assert "1 1 + . 2  ok" in type_line(page, "")
 
 
@@ -113,6 +114,11 @@ def test_the_page_fits_both_projectors_without_scrolling(page, width, height):
         page.execute_script("return new Promise(r => setTimeout(r, 300))")
         scroll = js(page, "[document.documentElement.scrollWidth, document.documentElement.scrollHeight]")
         assert scroll[0] <= width and scroll[1] <= height, scroll
+        front = page.find_element(By.ID, "front-panel").text    # the 11/23, live
+        assert "PSW" in front and "IP" in front and "DAC X" in front
+        assert js(page, "window.lab.panel.registers.length") == 8
+        box = js(page, "document.getElementById('front-panel').getBoundingClientRect().toJSON()")
+        assert box["bottom"] <= height, "the front panel is cut off"
         for panel in ("console-panel", "robot-panel", "servo-panel", "scope-panel"):
             box = js(page, f"document.getElementById('{panel}').getBoundingClientRect().toJSON()")
             assert box["width"] > 200 and box["height"] > 150, (panel, box)

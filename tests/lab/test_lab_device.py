@@ -120,3 +120,26 @@ def test_ticks_keep_their_simulated_times_when_rate_changes(tmp_path):
     times = [s[0] for s in rows(out, "W")]
     assert times == ["0.016667", "0.033333", "0.050000", "0.066667",
                      "0.083333", "0.100000", "0.116667", "0.133333"]
+
+
+def test_panel_rows_show_registers_psw_and_device_registers(tmp_path, ctl):
+    """`panel ADDR...`: an R row each tick, all octal: R0-R7, the PSW, the word at
+    R4 (IP), the KW11-L's LKS, the DRV11's CSR and OUTBUF, the four DACs, the words
+    asked for."""
+    out = tmp_path / "lab"
+    ctl("panel 140000\npanel 140001\n")
+    simh.run(f"load {KERNEL}\n" + simh.deposit(0o140000, [0o1234]) +
+             f"attach lab {out}\nset lab speed=10\nstep 21000\nshow cpu\ndetach lab\n")
+    panel = rows(out, "R")
+    assert len(panel) == 4 and all(len(r) == 1 + 8 + 2 + 3 + 4 + 1 for r in panel)
+    last = panel[-1]
+    registers = [int(v, 8) for v in last[1:9]]
+    assert all(0 <= r < 0o200000 for r in registers) and registers[7] % 2 == 0
+    psw = int(last[9], 8)
+    assert psw >> 14 == 0                            # kernel mode, as the FORTH runs
+    lks = int(last[11], 8)
+    assert lks & 0o200                               # the KW11-L has ticked (MON)
+    assert last[14:18] == ["4000"] * 4               # every DAC at 2048: zero volts
+    assert last[18] == "1234"                        # the word asked for
+    assert [e[0] for e in rows(out, "E")] == [
+        "panel takes even octal addresses below 160000"]

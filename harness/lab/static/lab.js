@@ -90,6 +90,7 @@ function takeData(m) {
   lab.dirty = true;
   lab.status = m.status;
   lab.servo = m.servo;
+  if (m.panel) lab.panel = m.panel;   // lab-panel.js draws it
   for (const row of m.rows) {
     const trace = lab.traces[row[ROW.axis]];
     trace.push(row);
