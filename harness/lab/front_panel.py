@@ -10,14 +10,13 @@ runs, (IP) the word it calls next.
 """
 import bisect
 
-from harness.lab.dictionary import header_name
-from harness.machine.kernel_layout import CHAINS, LENGTH, SMUDGE, code_field
+from harness.lab.dictionary import headers
+from harness.machine.kernel_layout import LENGTH, SMUDGE, code_field
 
 # the kernel's register map (forth/README.md, "Registers and threading")
 ROLES = ("R0", "T", "W", "R3", "IP", "S (data stack)", "RP = SP", "PC")
 PANEL_WORDS = ("BLK", ">IN")         # kernel variables the row carries, in this order
 BLOCK_LINE = 64                      # characters a block line
-MAX_HEADERS = 20000
 
 
 def decode_psw(psw):
@@ -38,15 +37,9 @@ class WordIndex:
 
     def learn(self, memory, vocabulary_body):
         """Add the headers of the vocabulary's four chains, from `memory`."""
-        for chain in range(CHAINS):
-            lfa, steps = memory.word(vocabulary_body + 2 * chain), 0
-            while lfa and steps < MAX_HEADERS:
-                name, count = header_name(memory, lfa)
-                if name is None:
-                    break
-                if not count & SMUDGE:
-                    self.by_address.setdefault(code_field(lfa, count & LENGTH), name)
-                lfa, steps = memory.word(lfa), steps + 1
+        for lfa, name, count in headers(memory, vocabulary_body):
+            if not count & SMUDGE:
+                self.by_address.setdefault(code_field(lfa, count & LENGTH), name)
         self._sorted = sorted(self.by_address)
 
     def name_at(self, address):

@@ -171,15 +171,22 @@ static int parse_address (const char *word, int32 *a)
     return 1;
 }
 
+/* A list of addresses into list[max]; 0 if one is bad or there are too many. */
+static int parse_addresses (char *args, int32 *list, int max, int *n)
+{
+    *n = 0;
+    for (char *w = strtok (args, " "); w; w = strtok (NULL, " "))
+        if (*n == max || !parse_address (w, &list[(*n)++]))
+            return 0;
+    return 1;
+}
+
 static const char *set_watch (char *args)
 {
     int32 list[WATCH_MAX];
-    int n = 0;
-    for (char *w = strtok (args, " "); w; w = strtok (NULL, " ")) {
-        if (n == WATCH_MAX) return "watch takes at most 64 addresses";
-        if (!parse_address (w, &list[n++]))
-            return "watch takes even octal addresses below 160000";
-    }
+    int n;
+    if (!parse_addresses (args, list, WATCH_MAX, &n))
+        return "watch takes at most 64 even octal addresses below 160000";
     memcpy (watch, list, sizeof list);
     watch_n = n;
     say_watch ();
@@ -189,16 +196,13 @@ static const char *set_watch (char *args)
 static const char *set_panel (char *args)
 {
     int32 list[PANEL_MAX];
-    int n = 0;
+    int n;
     if (strcmp (args, "off") == 0) {
         panel = 0;
         return NULL;
     }
-    for (char *w = strtok (args, " "); w; w = strtok (NULL, " ")) {
-        if (n == PANEL_MAX) return "panel takes at most 8 addresses";
-        if (!parse_address (w, &list[n++]))
-            return "panel takes even octal addresses below 160000, or off";
-    }
+    if (!parse_addresses (args, list, PANEL_MAX, &n))
+        return "panel takes at most 8 even octal addresses below 160000, or off";
     memcpy (panel_at, list, sizeof list);
     panel_n = n;
     panel = 1;

@@ -42,7 +42,7 @@ def test_rows_and_commands(tmp_path, ctl):
     assert rows(out, "M") == [["140000", str(0o1234), "65535"]]
     assert [e[0] for e in rows(out, "E")] == [
         "speed takes a number from 0 (full speed) to 1000 (times the 11/23's pace)",
-        "watch takes even octal addresses below 160000",
+        "watch takes at most 64 even octal addresses below 160000",
         "commands: speed X", ]
     samples = rows(out, "W")
     assert [s[1] for s in samples] == ["1", "2", "3", "4"]         # every 5000 instructions
@@ -142,4 +142,4 @@ def test_panel_rows_show_registers_psw_and_device_registers(tmp_path, ctl):
     assert last[14:18] == ["4000"] * 4               # every DAC at 2048: zero volts
     assert last[18] == "1234"                        # the word asked for
     assert [e[0] for e in rows(out, "E")] == [
-        "panel takes even octal addresses below 160000"]
+        "panel takes at most 8 even octal addresses below 160000"]
