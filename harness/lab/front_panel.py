@@ -12,6 +12,7 @@ import bisect
 
 from harness.lab.dictionary import headers
 from harness.machine.kernel_layout import LENGTH, SMUDGE, code_field
+from harness.machine.plant_rows import AXES
 
 # the kernel's register map (forth/README.md, "Registers and threading")
 ROLES = ("R0", "T", "W", "R3", "IP", "S (data stack)", "RP = SP", "PC")
@@ -79,5 +80,5 @@ def panel(fields, index):
             {"device": "DRV11", "register": "CSR", "address": "167770", "value": f"{csr:06o}"},
             {"device": "DRV11", "register": "OUT", "address": "167772", "value": f"{outbuf:06o}"},
         ] + [{"device": "AAV11-A", "register": f"DAC {axis}", "address": f"{0o170440 + 2 * i:o}",
-              "value": f"{code:04o}"} for i, (axis, code) in enumerate(zip("XYZT", dacs))],
+              "value": f"{code:04o}"} for i, (axis, code) in enumerate(zip(AXES, dacs))],
     }
