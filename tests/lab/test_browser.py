@@ -6,6 +6,7 @@ import pytest
 from selenium.webdriver.common.by import By
 
 from harness.analysis.trace import parse_rows
+from harness.machine.build import BUILD
 from harness.machine.plant_rows import COLUMNS
 
 from labpage import ARTIFACTS, click, js, type_line, wait_for
@@ -26,6 +27,8 @@ def page(lab_server, browser):
 def test_the_terminal_answers(page):
     assert "2 3 + . 5  ok" in type_line(page, "2 3 + .")
     assert "token=" not in page.current_url          # off the address bar
+    violations = accessibility_violations(page)      # before 1000 LOAD: no servo data yet
+    assert not [v for v in violations if v[1] in ("serious", "critical")], violations
 
 
 def test_a_move_shows_on_the_robot_and_the_scope(page):
@@ -99,6 +102,19 @@ def test_pause_holds_simulated_time_and_step_is_one_tick(page):
     assert "1 1 + . 2  ok" in type_line(page, "")
 
 
+AXE = BUILD / "lab" / "node_modules" / "axe-core" / "axe.min.js"   # pinned: harness/lab/package.json
+
+
+def accessibility_violations(page):
+    """axe-core's violations on the page as it is: (rule, impact, nodes, help)."""
+    page.execute_script(AXE.read_text())
+    page.set_script_timeout(60)
+    return page.execute_async_script(
+        "const done = arguments[arguments.length - 1];"
+        "axe.run(document, { resultTypes: ['violations'] }).then((r) => done("
+        "r.violations.map((v) => [v.id, v.impact, v.nodes.length, v.help])));")
+
+
 @pytest.mark.parametrize("width, height", [(1280, 720), (1920, 1080)])
 def test_the_page_fits_both_projectors_without_scrolling(page, width, height):
     """Each panel present, nothing scrolls, at both projector sizes; the screenshots
@@ -127,6 +143,8 @@ def test_the_page_fits_both_projectors_without_scrolling(page, width, height):
                           ".map(b => b.getBoundingClientRect().right)")
         assert max(header) <= width, "a header button is cut off"
         page.save_screenshot(str(ARTIFACTS / f"lab-{width}.png"))
+        violations = accessibility_violations(page)
+        assert not [v for v in violations if v[1] in ("serious", "critical")], violations
     finally:
         page.execute_cdp_cmd("Emulation.clearDeviceMetricsOverride", {})
 
