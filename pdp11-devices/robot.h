@@ -53,13 +53,16 @@ void io_page_examine_install (void);
 void console_pacing_install (void);
 void console_pacing_rate_changed (int32 old_rate);
 
+/* The scripted runs' stop at the prompt (prompt_cue.c). */
+void prompt_cue_install (void);
+
 /* RL02 write-through (rl_durable.c). */
 void rl_durable_install (void);
 
 /* The lab bench's device (lab.c): its part of a rate change. */
 void lab_rate_changed (int32 old_rate);
 
-extern DEVICE kwl_dev, drv_dev, aav_dev, plant_dev, lab_dev;
+extern DEVICE kwl_dev, drv_dev, aav_dev, plant_dev, lab_dev, cue_dev;
 
 /* Byte writes (SIMH passes the byte in data<7:0>, PA<0> says which half). */
 #define MERGE_BYTE(old, data, pa, access) \

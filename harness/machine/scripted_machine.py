@@ -3,9 +3,11 @@
 Why not the keyboard: a line typed into the pty lands at whatever instruction
 count the simulator has reached when the host gets round to writing it, and the
 servo and the plant keep moving while the FORTH waits; two runs of one script
-would then differ. Here the simulator stops itself, at a breakpoint on the code
-address of the kernel's QUERY (reached once per line, after the previous line's
-" ok" or error report), and while it is stopped the next line is deposited into
+would then differ. Here the simulator stops itself at the kernel's prompt:
+QUERY (reached once per line, after the previous line's " ok" or error report)
+starts with AWAIT-LINE, whose read of the DL11's status register is the cue the
+CUE device stops at (pdp11-devices/prompt_cue.c: no per-instruction breakpoint
+test, so the FORTH runs at full speed). While it is stopped the next line is deposited into
 the kernel's console receive ring exactly as if the receive interrupt had just
 stored it (type-ahead); then it runs on. Every stop and every character thus
 falls on an instruction count that depends only on the script: the transcript
@@ -35,7 +37,7 @@ from harness.machine.simh import MACHINE_INI, PDP11, SimhError, examined
 ROOT = Path(__file__).resolve().parents[2]
 KERNEL = ROOT / "build" / "kernel.lda"
 KERNEL_MAP = ROOT / "build" / "kernel.map"
-KERNEL_SYMBOLS = ("QUERY", "RXHEAD", "RXTAIL", "RING", "RING-MASK", "TIB-SIZE")
+KERNEL_SYMBOLS = ("AWAIT-LINE", "RXHEAD", "RXTAIL", "RING", "RING-MASK", "TIB-SIZE")
 
 PROMPT = "sim> "
 # WAIT (the kernel's KEY with an empty ring, e.g. during #wait) skips straight to
@@ -107,16 +109,19 @@ FORTH_ERROR = re.compile(r"\r\nError: ([^\r\n]*)")
 class ScriptedMachine(contextlib.AbstractContextManager):
     def __init__(self, disk, trace=None, simulator=PDP11, kernel=KERNEL,
                  kernel_map=KERNEL_MAP, line_limit=60.0, wall_timeout=300, cwd=ROOT,
-                 settings=()):
+                 settings=(), cue_breakpoint=False):
         """`disk` and `trace` are attached as given, relative to `cwd`: SIMH
         prints them in SHOW, so a scripted run passes bare names. `settings`
-        are SIMH commands run before the trace is attached (SET PLANT ...)."""
+        are SIMH commands run before the trace is attached (SET PLANT ...).
+        `cue_breakpoint`: stop at the cue by a SIMH breakpoint on its address
+        instead (slower; the test that the CUE device stops at the same place)."""
         for what, path in (("simulator", simulator), ("kernel", kernel),
                            ("disk", Path(cwd) / disk)):
             if not Path(path).is_file():
                 raise ScriptError(f"the {what} {path} does not exist (run make)")
         self.sym = read_kernel_map(kernel_map)
         self.max_line = self.sym["TIB-SIZE"] - 1          # what ACCEPT takes
+        self.cue = self.sym["AWAIT-LINE"] + 4    # after its TST @#177560: at QUERY
         self.line_limit = line_limit
         self._tmp = tempfile.TemporaryDirectory(prefix="scripted-machine-")
         self._feed = Path(self._tmp.name) / "feed.ini"
@@ -127,7 +132,8 @@ class ScriptedMachine(contextlib.AbstractContextManager):
                        + "".join(f"{c}\n" for c in settings)
                        + (f"attach plant {trace}\n" if trace else "")
                        + f"load {Path(kernel).resolve()}\n"
-                       f"break {self.sym['QUERY']:o}\n")
+                       + (f"break {self.cue:o}\n" if cue_breakpoint
+                          else f"deposit cue pc {self.cue:o}\n"))
         # echo off: SIMH's commands are not echoed, so its output is all there is
         self.child = pexpect.spawn(str(simulator), [str(ini)], cwd=str(cwd), echo=False,
                                    encoding="latin-1", timeout=wall_timeout,
@@ -180,7 +186,7 @@ class ScriptedMachine(contextlib.AbstractContextManager):
                 raise ScriptError(f"the simulator reported, during {what}: {text.strip()}")
             text = text[len(PROMPT):]
         reason, pc = self.child.match.group(1), int(self.child.match.group(2), 8)
-        if reason == "Breakpoint" and pc == self.sym["QUERY"]:
+        if reason == "Breakpoint" and pc == self.cue:
             stopped = ""
         elif reason == "Step expired":
             stopped = "step"
@@ -258,7 +264,7 @@ class ScriptedMachine(contextlib.AbstractContextManager):
     def run_to(self, address, limit):
         """Run until the instruction at `address` is next (a SIMH breakpoint, removed
         again), at most `limit` simulated seconds; the Answer (`stopped` names the
-        breakpoint, or says the time ran out). The QUERY breakpoint stays set."""
+        breakpoint, or says the time ran out). The prompt's cue stays set."""
         self.simh(f"break {address:o}")
         try:
             answer = self._run(f"step {self._steps(limit)}", f"run to {address:o}")
