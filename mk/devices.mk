@@ -30,8 +30,10 @@ $(ROBOT_OBJ)/%.o: $(DEV_DIR)/%.c $(DEV_HDRS) $(SIMH_STAMP)
 	@mkdir -p $(dir $@)
 	@$(CC) $(DEV_CFLAGS) -I $(DEV_DIR) -c $< -o $@
 
-$(BUILD)/pdp11: $(ROBOT_SIMH_OBJS) $(DEV_OBJS)
-	@echo "==> linking the robot's PDP-11/23 simulator: $@"
+# build/pdp11-plain: the simulator, -O2 (build/pdp11 is a copy of it, or with
+# PGO=1 of the profile-guided build/pdp11-guided: mk/pgo.mk).
+$(BUILD)/pdp11-plain: $(ROBOT_SIMH_OBJS) $(DEV_OBJS)
+	@echo "==> linking the robot's PDP-11/23 simulator (no profile guidance): $@"
 	@$(CC) -o $@ $^ $(SIMH_LIBS)
 
 $(BUILD)/plant_test: $(DEV_DIR)/plant_test.c $(ROBOT_OBJ)/plant.o
@@ -41,9 +43,9 @@ $(BUILD)/gripper_test: $(DEV_DIR)/gripper_test.c $(ROBOT_OBJ)/gripper.o
 	@$(CC) $(PLANT_CFLAGS) -o $@ $^ -lm
 
 # pdp11-stock too: the reference the benchmark and tests/test_simh_stock.py use.
-ALL_PRODUCTS += $(BUILD)/pdp11 $(BUILD)/plant_test $(BUILD)/gripper_test $(BUILD)/pdp11-stock
+ALL_PRODUCTS += $(BUILD)/pdp11 $(BUILD)/pdp11-plain $(BUILD)/plant_test $(BUILD)/gripper_test $(BUILD)/pdp11-stock
 
-bench-devices: $(BUILD)/pdp11 $(BUILD)/pdp11-stock venv
+bench-devices: $(BUILD)/pdp11 $(BUILD)/pdp11-plain $(BUILD)/pdp11-guided $(BUILD)/pdp11-stock $(BUILD)/kernel.lda $(PRISTINE_DSK) venv
 	@$(PY) harness/bench/bench_devices.py
 BENCHES += bench-devices
 .PHONY: bench-devices
