@@ -24,6 +24,7 @@ A line that does not reach the next prompt within `line_limit` simulated seconds
 FORTH's receive interrupt takes at once. Addresses come from build/kernel.map.
 """
 import contextlib
+import os
 import re
 import tempfile
 from dataclasses import dataclass
@@ -125,6 +126,11 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         self.line_limit = line_limit
         self._tmp = tempfile.TemporaryDirectory(prefix="scripted-machine-")
         self._feed = Path(self._tmp.name) / "feed.ini"
+        # rewritten in place for every line, never shorter: blank lines pad it
+        # (opening for writing or truncating took over a millisecond here, as
+        # long as the rest of the line's round trip)
+        self._feed_fd = os.open(self._feed, os.O_RDWR | os.O_CREAT, 0o600)
+        self._feed_size = 0
         ini = Path(self._tmp.name) / "boot.ini"
         ini.write_text(f"do {MACHINE_INI}\n"
                        f"{SKIP_WAITS}\n"
@@ -139,6 +145,7 @@ class ScriptedMachine(contextlib.AbstractContextManager):
                                    encoding="latin-1", timeout=wall_timeout,
                                    dimensions=(24, 200))
         self.child.delaybeforesend = None
+        self.child.delayafterread = None       # pexpect's default sleeps 0.1 ms a read
         self._expect_prompt("the boot script")
         self.rate = self._clock_rate()
         self._head = None       # the ring's index after a line that reached QUERY
@@ -207,7 +214,9 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         if any(not (32 <= ord(c) < 127 or c == "\t") for c in text):
             raise ScriptError("line holds a control or non-ASCII character")
         head = self._ring_head()
-        self._feed.write_text("\n".join(feed_commands(self.sym, text, head)) + "\n")
+        feed = ("\n".join(feed_commands(self.sym, text, head)) + "\n").encode()
+        self._feed_size = max(self._feed_size, len(feed))
+        os.pwrite(self._feed_fd, feed.ljust(self._feed_size, b"\n"), 0)
         limit = self.line_limit if limit is None else limit
         answer = self._run(f"do {self._feed}\rstep {self._steps(limit)}",
                            text, extra_prompts=1)
@@ -293,6 +302,7 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         except (ScriptError, pexpect.TIMEOUT, pexpect.EOF, OSError):
             pass            # a simulator already gone or stuck: killed below
         pty_child.close(self.child)
+        os.close(self._feed_fd)
         self._tmp.cleanup()
 
     def __exit__(self, *exc):
