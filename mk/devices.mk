@@ -2,17 +2,26 @@
 # (pdp11-devices/), and build/plant_test and build/gripper_test, the plant's
 # axis physics and the gripper's mechanics tested alone.
 #
-# SIMH's files are compiled unpatched. The stock objects are shared with
+# SIMH's files are compiled unpatched but one. The stock objects are shared with
 # build/pdp11-stock, except pdp11_sys.c, compiled again with its device table
 # renamed (stock_sim_devices): pdp11-devices/robot_sys.c defines the table
-# SIMH uses (see its header).
+# SIMH uses (see its header); and pdp11_cpu.c, of which a copy gets the one-line
+# patch pdp11-devices/pdp11_cpu_kdf11_time.patch (SET CLK TIMED: SIMH's CPU loop
+# has no hook for a per-instruction time; kdf11_time.c says why and what).
+# The KDF11-A times come from harness/analysis/kdf11.py, as a generated C table.
 ROBOT_OBJ  := $(BUILD)/obj/robot
 DEV_DIR    := pdp11-devices
 DEV_HDRS   := $(wildcard $(DEV_DIR)/*.h)
 DEV_GLUE   := $(filter-out $(DEV_DIR)/%_test.c,$(wildcard $(DEV_DIR)/*.c))
 DEV_OBJS   := $(patsubst $(DEV_DIR)/%.c,$(ROBOT_OBJ)/%.o,$(DEV_GLUE))
 ROBOT_SYS  := $(ROBOT_OBJ)/pdp11_sys_stock.o
-ROBOT_SIMH_OBJS := $(filter-out $(STOCK_OBJ)/PDP11/pdp11_sys.o,$(STOCK_OBJS)) $(ROBOT_SYS)
+ROBOT_CPU  := $(ROBOT_OBJ)/pdp11_cpu_timed.o
+CPU_PATCH  := $(DEV_DIR)/pdp11_cpu_kdf11_time.patch
+PATCHED_CPU := $(BUILD)/simh-patched/PDP11/pdp11_cpu.c
+GEN_DIR    := $(BUILD)/gen
+KDF11_TABLE := $(GEN_DIR)/kdf11_extra.h
+ROBOT_SIMH_OBJS := $(filter-out $(STOCK_OBJ)/PDP11/pdp11_sys.o $(STOCK_OBJ)/PDP11/pdp11_cpu.o,\
+                   $(STOCK_OBJS)) $(ROBOT_SYS) $(ROBOT_CPU)
 # Our own code gets warnings; SIMH's headers need its flags.
 DEV_CFLAGS := $(filter-out -w,$(SIMH_CFLAGS)) -Wall -Wno-unused-function
 PLANT_CFLAGS := -std=c99 -O2 -g -Wall -Wextra
@@ -21,6 +30,20 @@ $(ROBOT_SYS): $(SIMH_STAMP)
 	@mkdir -p $(dir $@)
 	@$(CC) $(SIMH_CFLAGS) -Dsim_devices=stock_sim_devices -c $(SIMH_SRC)/PDP11/pdp11_sys.c -o $@
 
+$(PATCHED_CPU): $(SIMH_STAMP) $(CPU_PATCH)
+	@mkdir -p $(dir $@)
+	@cp $(SIMH_SRC)/PDP11/pdp11_cpu.c $@.tmp
+	@patch -s --no-backup-if-mismatch $@.tmp $(CPU_PATCH) && mv $@.tmp $@
+
+$(ROBOT_CPU): $(PATCHED_CPU)
+	@mkdir -p $(dir $@)
+	@$(CC) $(SIMH_CFLAGS) -c $< -o $@
+
+$(KDF11_TABLE): harness/analysis/kdf11.py harness/analysis/kdf11_table.py | $(VENV)/.stamp
+	@$(PY) -m harness.analysis.kdf11_table $@
+
+$(ROBOT_OBJ)/kdf11_time.o: $(KDF11_TABLE)
+
 # the pure mechanics (no SIMH types): strict flags, tested alone
 $(ROBOT_OBJ)/plant.o $(ROBOT_OBJ)/gripper.o: $(ROBOT_OBJ)/%.o: $(DEV_DIR)/%.c $(DEV_DIR)/%.h
 	@mkdir -p $(dir $@)
@@ -28,7 +51,7 @@ $(ROBOT_OBJ)/plant.o $(ROBOT_OBJ)/gripper.o: $(ROBOT_OBJ)/%.o: $(DEV_DIR)/%.c $(
 
 $(ROBOT_OBJ)/%.o: $(DEV_DIR)/%.c $(DEV_HDRS) $(SIMH_STAMP)
 	@mkdir -p $(dir $@)
-	@$(CC) $(DEV_CFLAGS) -I $(DEV_DIR) -c $< -o $@
+	@$(CC) $(DEV_CFLAGS) -I $(DEV_DIR) -I $(GEN_DIR) -c $< -o $@
 
 # build/pdp11-plain: the simulator, -O2 (build/pdp11 is a copy of it, or with
 # PGO=1 of the profile-guided build/pdp11-guided: mk/pgo.mk).

@@ -22,6 +22,10 @@ double wall_seconds (void);                        /* the host's monotonic clock
 void wall_pacer_pace (wall_pacer *p, double speed, double slack_s);  /* sleep while ahead */
 void wall_pacer_drop (wall_pacer *p);              /* the next call takes a new reference */
 
+/* The KDF11-A's instruction times as the time base (kdf11_time.c, SET CLK TIMED). */
+extern int32 kdf11_timed;
+t_stat kdf11_time_set (int on);
+
 /* The clock (kw11l.c): its part of a rate change. */
 void kwl_rate_changed (int32 old_rate);
 
