@@ -56,6 +56,9 @@ def configure(parser):
     parser.add_argument("--kernel", metavar="LDA", default=str(KERNEL),
                         help="the FORTH kernel to load (default build/kernel.lda); its "
                         "symbol map is the .map file beside it")
+    parser.add_argument("--timed", action="store_true",
+                        help="11/23 time: each instruction takes its KDF11-A time (SET CLK "
+                        "TIMED) instead of 1/300000 s; the clock ticks every real 1/60 s")
     parser.add_argument("--simulator", default=str(PDP11), help=argparse.SUPPRESS)
     parser.set_defaults(run=run)
 
@@ -105,7 +108,8 @@ def run(args):
         with ScriptedMachine("robot.dsk", trace="trace.csv", cwd=tmp,
                              simulator=args.simulator, line_limit=args.line_limit,
                              kernel=Path(args.kernel),
-                             kernel_map=Path(args.kernel).with_suffix(".map")) as m:
+                             kernel_map=Path(args.kernel).with_suffix(".map"),
+                             settings=("set clk timed",) if args.timed else ()) as m:
             result = run_steps(m, steps, keep_going=args.keep_going)
         trace = (Path(tmp) / "trace.csv").read_bytes()
     write_atomic(transcript_path, result.transcript.encode("latin-1"))

@@ -49,6 +49,7 @@ PROMPT = "sim> "
 SKIP_WAITS = "deposit cpu wait_enable 1"
 # SIMH reports every stop as "\n<reason>, PC: <octal> (<instruction>)\n" then prompts.
 STOP = re.compile(r"\r\n([^\r\n]*), PC: ([0-7]+) \(([^\r\n]*)\)\r\nsim> ")
+MAX_STEP = 2**31 - 1
 EXAMINED = re.compile(r"([0-7]+):\s+([0-7]+)")
 
 
@@ -205,6 +206,20 @@ class ScriptedMachine(contextlib.AbstractContextManager):
     def _steps(self, seconds):
         return max(1, round(seconds * self.rate))
 
+    def _run_for(self, seconds, what, before="", extra_prompts=0):
+        """`before` (commands), then run for `seconds` of simulated time or to a
+        stop, in STEPs of at most 31 bits (SIMH's limit: 161 s of SET CLK
+        TIMED's units); the Answer, its output that of every STEP."""
+        steps, outputs = self._steps(seconds), []
+        while True:
+            chunk = min(steps, MAX_STEP)
+            answer = self._run(f"{before}step {chunk}", what, extra_prompts)
+            outputs.append(answer.output)
+            steps, before, extra_prompts = steps - chunk, "", 0
+            if answer.stopped != "step" or steps == 0:
+                answer.output = "".join(outputs)
+                return answer
+
     # ---- what a script does ---------------------------------------------------------
     def line(self, text, limit=None):
         """Type one line (as if typed ahead) and run until the next prompt, or
@@ -218,8 +233,7 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         self._feed_size = max(self._feed_size, len(feed))
         os.pwrite(self._feed_fd, feed.ljust(self._feed_size, b"\n"), 0)
         limit = self.line_limit if limit is None else limit
-        answer = self._run(f"do {self._feed}\rstep {self._steps(limit)}",
-                           text, extra_prompts=1)
+        answer = self._run_for(limit, text, before=f"do {self._feed}\r", extra_prompts=1)
         if not answer.stopped:   # back at QUERY: ACCEPT took the line and its CR
             self._head = (head + len(text) + 1) & self.sym["RING-MASK"]
         return self._limited(answer, limit)
@@ -249,7 +263,7 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         `limit` simulated seconds more)."""
         limit = self.line_limit if limit is None else limit
         self._head = None
-        return self._limited(self._run(f"step {self._steps(limit)}", "resume"), limit)
+        return self._limited(self._run_for(limit, "resume"), limit)
 
     def interrupt(self, limit=None):
         """Type ^C, as a user stops a runaway line, and run to the next prompt (or
@@ -276,7 +290,7 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         breakpoint, or says the time ran out). The prompt's cue stays set."""
         self.simh(f"break {address:o}")
         try:
-            answer = self._run(f"step {self._steps(limit)}", f"run to {address:o}")
+            answer = self._run_for(limit, f"run to {address:o}")
         finally:
             self.simh(f"nobreak {address:o}")
         return self._limited(answer, limit)
@@ -284,7 +298,7 @@ class ScriptedMachine(contextlib.AbstractContextManager):
     def wait(self, seconds):
         """Let `seconds` of simulated time pass with no input; the output."""
         self._head = None
-        answer = self._run(f"step {self._steps(seconds)}", f"#wait {seconds}")
+        answer = self._run_for(seconds, f"#wait {seconds}")
         if answer.stopped == "step":
             answer.stopped = ""
         elif not answer.stopped and not answer.error:
