@@ -11,7 +11,8 @@ END-MARK at processor priority 6 (no interrupt comes in between):
 They use the one table (harness/analysis/kdf11.py; the simulator's C table is
 generated from it) and should agree within 1 %: the difference is SOB priced
 taken in the simulator's table. Then the ten-pass Sieve, 1000 LOAD and an idle
-second in both time bases (instruction counts / 300 000, and timed)."""
+second in both time bases (instruction counts / 300 000, and timed), and
+docs/servo.md's moves on x with Move.Complete?."""
 import re
 import shutil
 import tempfile
@@ -32,6 +33,7 @@ DEFINITIONS = [
     ": B-PASS ( -- ) 6 PRIORITY! MARK PRIMES DROP END-MARK 0 PRIORITY! ;",
 ]
 UNIT_S = 75e-9
+MOVE_TARGETS = (4000, 4150, 4190)
 
 
 def show_time(m):
@@ -48,10 +50,10 @@ def addresses(m):
     return int(mark, 8), int(end, 8)
 
 
-def timed_pass(tmp):
-    """(MARK, END-MARK, seconds of one timed Sieve pass)."""
+def timed_pass(tmp, definitions=DEFINITIONS):
+    """(MARK, END-MARK, seconds of one timed B-PASS: MARK to END-MARK)."""
     with ScriptedMachine("robot.dsk", cwd=tmp, settings=("set clk timed",)) as m:
-        for line in DEFINITIONS:
+        for line in definitions:
             m.line(line)
         mark, end = addresses(m)
         m.simh(f"break {mark:o}")
@@ -62,14 +64,15 @@ def timed_pass(tmp):
         return mark, end, (show_time(m) - at_mark) * UNIT_S
 
 
-def priced_pass(tmp, mark, end):
+def priced_pass(tmp, mark, end, definitions=DEFINITIONS, instructions=1_000_000):
+    """(seconds, instructions) of B-PASS untimed, priced from SIMH's history."""
     disk = Path(tmp) / "priced.dsk"
     shutil.copy(DISK, disk)
     sym = read_kernel_map()
-    lines = DEFINITIONS + ["OCTAL ' MARK U. ' END-MARK U. DECIMAL"]
+    lines = definitions + ["OCTAL ' MARK U. ' END-MARK U. DECIMAL"]
     setup = (setup_script(disk, lines) + f"deposit {sym['RXTAIL']:o} 0\n"
              + "\n".join(feed_commands(sym, "B-PASS", 0)) + "\n")
-    report = timing.measure(setup, entry=mark, end=end, instructions=1_000_000)
+    report = timing.measure(setup, entry=mark, end=end, instructions=instructions)
     return report.spans[0].microseconds * 1e-6, report.spans[0].instructions
 
 
@@ -89,6 +92,23 @@ def seconds_of(line, timed, before=()):
             return clock_seconds(m) - t0
 
 
+def move_seconds(timed):
+    """Simulated seconds of docs/servo.md's moves on x (harness/bench/servo_runs.py's:
+    4000 counts out, then 150 and 40 more), each line with Move.Complete?."""
+    with tempfile.TemporaryDirectory() as tmp:
+        shutil.copy(DISK, Path(tmp) / "robot.dsk")
+        with ScriptedMachine("robot.dsk", cwd=tmp,
+                             settings=("set clk timed",) if timed else ()) as m:
+            m.line("1000 LOAD")
+            m.line("Set.Up.Robot")
+            found = []
+            for x in MOVE_TARGETS:
+                t0 = clock_seconds(m)
+                answer = m.line(f"{x} 0 0 0 Abs.Move Move.Complete?")
+                found.append(clock_seconds(m) - t0 if answer.ok else None)
+            return found
+
+
 def main():
     with tempfile.TemporaryDirectory() as tmp:
         shutil.copy(DISK, Path(tmp) / "robot.dsk")
@@ -106,6 +126,14 @@ def main():
             ("an idle second at the prompt", "#wait 1", ())]:
         count, real = seconds_of(line, False, before), seconds_of(line, True, before)
         print(f"  {label:32s} {count:9.3f} {real:9.3f}  ({real / count:.3f})")
+    print("docs/servo.md's moves on x, each line with Move.Complete? (seconds: by the "
+          "count, timed)")
+    for x, count, real in zip(MOVE_TARGETS, move_seconds(False), move_seconds(True)):
+        shown = [f"{v:9.3f}" if v is not None else "  (error)" for v in (count, real)]
+        print(f"  to x = {x:<5d}{'':22s} {shown[0]} {shown[1]}")
+    per_instruction = timed / instructions
+    print(f"  the tick: 1/60 s = 16.667 ms timed; by the count 5000 instructions, "
+          f"{5000 * per_instruction * 1e3:.2f} ms of the Sieve's instructions on a real 11/23")
 
 
 if __name__ == "__main__":
