@@ -41,6 +41,9 @@ def configure(parser):
     parser.add_argument("--fast", action="store_true",
                         help="full speed instead of the 11/23's real-time pace")
     parser.add_argument("--trace", metavar="FILE", help="record the plant trace (CSV)")
+    parser.add_argument("--timed", action="store_true",
+                        help="11/23 time: each instruction takes its KDF11-A time (SET CLK "
+                        "TIMED) instead of 1/300000 s")
     parser.add_argument("--simulator", default=str(PDP11), help=argparse.SUPPRESS)
     # wall seconds a running word gets at BYE before ^C stops it (tests shorten it)
     parser.add_argument("--busy-wait", type=positive, default=BUSY_WAIT,
@@ -73,5 +76,5 @@ def run(args):
         raise ConsoleError(f"{args.simulator}: no simulator (run make)")
     if args.trace and not Path(args.trace).resolve().parent.is_dir():
         raise ConsoleError(f"{args.trace}: its directory does not exist")
-    return session(args.simulator, disk, trace=args.trace, fast=args.fast,
+    return session(args.simulator, disk, trace=args.trace, fast=args.fast, timed=args.timed,
                    busy_wait=args.busy_wait)
