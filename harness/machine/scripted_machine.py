@@ -316,7 +316,9 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         except (ScriptError, pexpect.TIMEOUT, pexpect.EOF, OSError):
             pass            # a simulator already gone or stuck: killed below
         pty_child.close(self.child)
-        os.close(self._feed_fd)
+        if self._feed_fd is not None:        # close() may come twice (Robot, __exit__)
+            os.close(self._feed_fd)
+            self._feed_fd = None
         self._tmp.cleanup()
 
     def __exit__(self, *exc):
