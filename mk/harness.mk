@@ -5,6 +5,8 @@
 #                            from the command line), of the regression suite and
 #                            of make test, the real-time factor, the idle console's
 #                            share of a core (part of make bench)
+#   make bench-timed         SET CLK TIMED against harness timing's price, and the
+#                            FORTH's and the servo's figures in 11/23 time (part of make bench)
 HARNESS_NEEDS := $(BUILD)/pdp11 $(BUILD)/kernel.lda $(BUILD)/kernel.map $(PRISTINE_DSK) venv
 
 regression: $(HARNESS_NEEDS)
