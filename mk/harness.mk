@@ -7,7 +7,7 @@
 #                            share of a core (part of make bench)
 #   make bench-timed         SET CLK TIMED against harness timing's price, and the
 #                            FORTH's and the servo's figures in 11/23 time (part of make bench)
-HARNESS_NEEDS := $(BUILD)/pdp11 $(BUILD)/kernel.lda $(BUILD)/kernel.map $(PRISTINE_DSK) venv
+HARNESS_NEEDS := $(BUILD)/pdp11 $(BUILD)/pdp11-timed $(BUILD)/kernel.lda $(BUILD)/kernel.map $(PRISTINE_DSK) venv
 
 regression: $(HARNESS_NEEDS)
 	@$(PY) -m harness regress

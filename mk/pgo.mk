@@ -2,7 +2,7 @@
 # -fprofile-generate, a training run of the FORTH, -fprofile-use, with -O3 and
 # link-time optimisation): the same sources as build/pdp11-plain (mk/devices.mk),
 # the host code laid out for what the FORTH does.
-#   1. build/obj/pgo-gen/: every object (pdp11_cpu.c the patched copy) instrumented -> build/pdp11-train
+#   1. build/obj/pgo-gen/: every object instrumented -> build/pdp11-train
 #   2. the training run: mk/pgo-train.script on it (python -m harness run: boot,
 #      1000 LOAD, a Sieve, a move on the servos, idle ticks; about a second)
 #      writes the .gcda profiles beside the objects
@@ -28,10 +28,10 @@ PGO_SCRIPT := mk/pgo-train.script
 # SIMH's files with SIMH's flags (pdp11_sys.c's table renamed, as for
 # build/pdp11-plain), the devices with theirs.
 define pgo_objects
-$(1)/%.o: $$(SIMH_STAMP) $$(PATCHED_CPU)
+$(1)/%.o: $$(SIMH_STAMP)
 	@mkdir -p $$(dir $$@) && $(3)
 	@$$(CC) $$(SIMH_CFLAGS) $(2) $$(if $$(filter PDP11/pdp11_sys,$$*),-Dsim_devices=stock_sim_devices) \
-	  -c $$(if $$(filter PDP11/pdp11_cpu,$$*),$$(PATCHED_CPU),$$(SIMH_SRC)/$$*.c) -o $$@
+	  -c $$(SIMH_SRC)/$$*.c -o $$@
 $(1)/dev/%.o: $$(DEV_DIR)/%.c $$(DEV_HDRS) $$(SIMH_STAMP) $$(KDF11_TABLE)
 	@mkdir -p $$(dir $$@) && $(3)
 	@$$(CC) $$(if $$(filter plant gripper,$$*),$$(PLANT_CFLAGS),$$(DEV_CFLAGS) -I $$(DEV_DIR) -I $$(GEN_DIR)) $(2) \

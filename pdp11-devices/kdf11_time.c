@@ -17,9 +17,11 @@
 
    SIMH's CPU loop has no hook for a per-instruction cost: the one line that
    adds it is pdp11_cpu_kdf11_time.patch, applied at build time to a copy of
-   pdp11_cpu.c (mk/devices.mk); with the mode off it adds nothing to the count
-   (tests/devices/test_kdf11_time.py runs a program on the stock and the
-   patched CPU and compares). */
+   pdp11_cpu.c for build/pdp11-timed (mk/devices.mk); with the mode off it adds
+   nothing to the count (tests/devices/test_kdf11_time.py runs a program on
+   the stock and the patched CPU and compares), but its test costs every
+   instruction (5 % on the Sieve), so build/pdp11 keeps SIMH's CPU and says
+   so at SET CLK TIMED. */
 #include "robot.h"
 #include "kdf11_extra.h"                /* build/gen: const uint16 kdf11_extra[65536] */
 
@@ -27,9 +29,15 @@
 
 int32 kdf11_timed = 0;
 static int32 rate_before;               /* RATE to return to at NOTIMED */
+/* defined by the patch: absent (null) in a simulator whose CPU is SIMH's own */
+extern const int32 kdf11_cpu_prices __attribute__ ((weak));
 
 t_stat kdf11_time_set (int on)
 {
+    if (on && &kdf11_cpu_prices == NULL) {
+        printf ("TIMED needs the CPU that prices instructions: build/pdp11-timed\n");
+        return SCPE_NOFNC;
+    }
     if (on == kdf11_timed)
         return SCPE_OK;
     if (on)

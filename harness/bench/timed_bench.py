@@ -10,8 +10,8 @@ END-MARK at processor priority 6 (no interrupt comes in between):
           harness/analysis/timing.py (kdf11.py's table, SOB taken or not)
 They use the one table (harness/analysis/kdf11.py; the simulator's C table is
 generated from it) and should agree within 1 %: the difference is SOB priced
-taken in the simulator's table. Then the ten-pass Sieve, 1000 LOAD and an idle
-second in both time bases (instruction counts / 300 000, and timed), and
+taken in the simulator's table. Then the ten-pass Sieve and 1000 LOAD in both
+time bases (instruction counts / 300 000, and timed), and
 docs/servo.md's moves on x with Move.Complete?."""
 import re
 import shutil
@@ -21,6 +21,7 @@ from pathlib import Path
 from harness.analysis import timing
 from harness.analysis.servo_timing import setup_script
 from harness.machine.scripted_machine import ROOT, ScriptedMachine, feed_commands, read_kernel_map
+from harness.machine.simh import PDP11, PDP11_TIMED
 
 DISK = ROOT / "build" / "robot.dsk"
 DEFINITIONS = [
@@ -34,6 +35,15 @@ DEFINITIONS = [
 ]
 UNIT_S = 75e-9
 MOVE_TARGETS = (4000, 4150, 4190)
+
+
+def machine(tmp, timed):
+    """A scripted run on a copy of the disk in `tmp`: timed (build/pdp11-timed,
+    SET CLK TIMED) or by the count (build/pdp11)."""
+    if timed:
+        return ScriptedMachine("robot.dsk", cwd=tmp, simulator=PDP11_TIMED,
+                               settings=("set clk timed",))
+    return ScriptedMachine("robot.dsk", cwd=tmp, simulator=PDP11)
 
 
 def show_time(m):
@@ -52,7 +62,7 @@ def addresses(m):
 
 def timed_pass(tmp, definitions=DEFINITIONS):
     """(MARK, END-MARK, seconds of one timed B-PASS: MARK to END-MARK)."""
-    with ScriptedMachine("robot.dsk", cwd=tmp, settings=("set clk timed",)) as m:
+    with machine(tmp, True) as m:
         for line in definitions:
             m.line(line)
         mark, end = addresses(m)
@@ -80,15 +90,11 @@ def seconds_of(line, timed, before=()):
     """Simulated seconds `line` takes (SHOW CLK), timed or by the count."""
     with tempfile.TemporaryDirectory() as tmp:
         shutil.copy(DISK, Path(tmp) / "robot.dsk")
-        with ScriptedMachine("robot.dsk", cwd=tmp,
-                             settings=("set clk timed",) if timed else ()) as m:
+        with machine(tmp, timed) as m:
             for b in before:
                 m.line(b, limit=600)
             t0 = clock_seconds(m)
-            if line.startswith("#wait "):
-                m.wait(float(line.split()[1]))
-            else:
-                m.line(line, limit=600)
+            m.line(line, limit=600)
             return clock_seconds(m) - t0
 
 
@@ -97,8 +103,7 @@ def move_seconds(timed):
     4000 counts out, then 150 and 40 more), each line with Move.Complete?."""
     with tempfile.TemporaryDirectory() as tmp:
         shutil.copy(DISK, Path(tmp) / "robot.dsk")
-        with ScriptedMachine("robot.dsk", cwd=tmp,
-                             settings=("set clk timed",) if timed else ()) as m:
+        with machine(tmp, timed) as m:
             m.line("1000 LOAD")
             m.line("Set.Up.Robot")
             found = []
@@ -122,8 +127,7 @@ def main():
     print("The same work in both time bases (simulated seconds: by the count, timed):")
     for label, line, before in [
             ("BYTE Sieve, 10 passes", "SIEVE .", DEFINITIONS[2:5]),
-            ("1000 LOAD", "1000 LOAD", ()),
-            ("an idle second at the prompt", "#wait 1", ())]:
+            ("1000 LOAD", "1000 LOAD", ())]:
         count, real = seconds_of(line, False, before), seconds_of(line, True, before)
         print(f"  {label:32s} {count:9.3f} {real:9.3f}  ({real / count:.3f})")
     print("docs/servo.md's moves on x, each line with Move.Complete? (seconds: by the "

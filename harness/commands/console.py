@@ -6,7 +6,7 @@ from pathlib import Path
 from harness.blocks.disk import DiskError, check_image
 from harness.commands.argtypes import positive
 from harness.machine.console_session import BUSY_WAIT, HINT, RACK_HINT, session
-from harness.machine.simh import PDP11
+from harness.machine.simh import PDP11, PDP11_TIMED
 
 ROOT = Path(__file__).resolve().parents[2]
 WORK_DISK = ROOT / "local" / "robot.dsk"
@@ -43,8 +43,8 @@ def configure(parser):
     parser.add_argument("--trace", metavar="FILE", help="record the plant trace (CSV)")
     parser.add_argument("--timed", action="store_true",
                         help="11/23 time: each instruction takes its KDF11-A time (SET CLK "
-                        "TIMED) instead of 1/300000 s")
-    parser.add_argument("--simulator", default=str(PDP11), help=argparse.SUPPRESS)
+                        "TIMED, on build/pdp11-timed) instead of 1/300000 s")
+    parser.add_argument("--simulator", help=argparse.SUPPRESS)
     # wall seconds a running word gets at BYE before ^C stops it (tests shorten it)
     parser.add_argument("--busy-wait", type=positive, default=BUSY_WAIT,
                         help=argparse.SUPPRESS)
@@ -72,6 +72,7 @@ def working_disk(requested):
 
 def run(args):
     disk = working_disk(args.disk)
+    args.simulator = args.simulator or str(PDP11_TIMED if args.timed else PDP11)
     if not Path(args.simulator).is_file():
         raise ConsoleError(f"{args.simulator}: no simulator (run make)")
     if args.trace and not Path(args.trace).resolve().parent.is_dir():

@@ -10,7 +10,7 @@ from harness.commands.argtypes import positive
 from harness.machine import script
 from harness.machine.script_run import run_steps
 from harness.machine.scripted_machine import KERNEL, ScriptError, ScriptedMachine
-from harness.machine.simh import PDP11, SimhError
+from harness.machine.simh import PDP11, PDP11_TIMED, SimhError
 
 ERRORS = (script.ScriptSyntaxError, ScriptError, SimhError, DiskError)
 PRISTINE = Path(__file__).resolve().parents[2] / "build" / "robot.dsk"
@@ -58,8 +58,9 @@ def configure(parser):
                         "symbol map is the .map file beside it")
     parser.add_argument("--timed", action="store_true",
                         help="11/23 time: each instruction takes its KDF11-A time (SET CLK "
-                        "TIMED) instead of 1/300000 s; the clock ticks every real 1/60 s")
-    parser.add_argument("--simulator", default=str(PDP11), help=argparse.SUPPRESS)
+                        "TIMED, on build/pdp11-timed) instead of 1/300000 s; the clock "
+                        "ticks every real 1/60 s")
+    parser.add_argument("--simulator", help=argparse.SUPPRESS)
     parser.set_defaults(run=run)
 
 
@@ -106,7 +107,8 @@ def run(args):
             raise ScriptError(f"{disk}: cannot copy the disk image: {e.strerror}") from e
         check_image(Path(tmp) / "robot.dsk")         # the copy the machine changes
         with ScriptedMachine("robot.dsk", trace="trace.csv", cwd=tmp,
-                             simulator=args.simulator, line_limit=args.line_limit,
+                             simulator=args.simulator or (PDP11_TIMED if args.timed else PDP11),
+                             line_limit=args.line_limit,
                              kernel=Path(args.kernel),
                              kernel_map=Path(args.kernel).with_suffix(".map"),
                              settings=("set clk timed",) if args.timed else ()) as m:

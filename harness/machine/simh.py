@@ -39,6 +39,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[2]
 PDP11 = ROOT / "build" / "pdp11"
 PDP11_STOCK = ROOT / "build" / "pdp11-stock"
+PDP11_TIMED = ROOT / "build" / "pdp11-timed"      # SET CLK TIMED (11/23 time) works here
 MACHINE_INI = ROOT / "pdp11-devices" / "machine.ini"
 KERNEL = ROOT / "build" / "kernel.lda"
 
