@@ -21,7 +21,7 @@ bench-harness: $(HARNESS_NEEDS)
 BENCHES += bench-harness
 .PHONY: regression regression-update bench-harness
 
-# SET CLK TIMED (pdp11-devices/kdf11_time.c) against harness timing's price, and
+# SET CLK TIMED (pdp11-devices/simh/kdf11_time.c) against harness timing's price, and
 # the FORTH's and the servo's figures in both time bases (about 10 s)
 bench-timed: $(HARNESS_NEEDS)
 	@$(PY) -m harness.bench.timed_bench

@@ -34,7 +34,7 @@ $(1)/%.o: $$(SIMH_STAMP)
 	  -c $$(SIMH_SRC)/$$*.c -o $$@
 $(1)/dev/%.o: $$(DEV_DIR)/%.c $$(DEV_HDRS) $$(SIMH_STAMP) $$(KDF11_TABLE)
 	@mkdir -p $$(dir $$@) && $(3)
-	@$$(CC) $$(if $$(filter plant gripper,$$*),$$(PLANT_CFLAGS),$$(DEV_CFLAGS) -I $$(DEV_DIR) -I $$(GEN_DIR)) $(2) \
+	@$$(CC) $$(if $$(filter plant/plant plant/gripper,$$*),$$(PLANT_CFLAGS),$$(DEV_CFLAGS) $$(DEV_INCS) -I $$(GEN_DIR)) $(2) \
 	  -c $$< -o $$@
 endef
 

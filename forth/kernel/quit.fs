@@ -146,7 +146,7 @@ CREATE ERROR-TEXTS  ( -- a )
 : .LOST  ( -- )  \ say so when the console ring overflowed
   RXLOST @ ?DUP IF CR U. ." characters lost: typed too far ahead" CR  0 RXLOST ! THEN ;
 \ AWAIT-LINE reads the DL11's RCSR, which a DL11 ignores: the cue at which a scripted
-\ run stops to type the next line (pdp11-devices/prompt_cue.c), at no cost between
+\ run stops to type the next line (pdp11-devices/simh/prompt_cue.c), at no cost between
 CODE AWAIT-LINE  ( -- )  177560O @# TST,  NEXT,  END-CODE  \ prompts (no breakpoint)
 : QUERY  ( -- )  \ CORE EXT: a line from the terminal becomes the source
   AWAIT-LINE  0 0 WHAT 2!  TIB TIB-SIZE 1- ACCEPT  TIB SWAP SRC 2!  0 >IN !  0 BLK !  0 SRC-ID !  SPACE .LOST ;

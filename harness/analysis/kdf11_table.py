@@ -1,12 +1,12 @@
 """The KDF11-A price of every instruction word as a C table, for the simulator's
-timed mode (pdp11-devices/kdf11_time.c): one table, harness/analysis/kdf11.py's,
+timed mode (pdp11-devices/simh/kdf11_time.c): one table, harness/analysis/kdf11.py's,
 used by both the after-the-fact pricing (`python -m harness timing`) and the
 clock.
 
     python -m harness.analysis.kdf11_table build/gen/kdf11_extra.h
 
 The table holds each word's units less one: SIMH's CPU loop counts one per
-instruction already (pdp11-devices/pdp11_cpu_kdf11_time.patch adds the rest).
+instruction already (pdp11-devices/simh/pdp11_cpu_kdf11_time.patch adds the rest).
 
 Unit: 75 ns, of which every figure of DEC's tables is a whole multiple (1.275 us
 = 17 units, MUL 33.075 us = 441). SOB is priced taken (2.700 us; not taken is

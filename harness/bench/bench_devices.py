@@ -17,15 +17,13 @@ Prints instructions per host second, the ratios to stock (goal >= 0.9) and the
 real-time factor (simulated seconds per wall second at RATE)."""
 import sys
 import time
-from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
+from harness.analysis.pdp11prog import Program, check_listing
+from harness.bench import forth_host_speed
+from harness.machine import simh
+from harness.machine.build import PDP11_STOCK, RATE
+from harness.machine.plant_rows import AXES
 
-from harness.analysis.pdp11prog import Program, check_listing      # noqa: E402
-from harness.bench import forth_host_speed                        # noqa: E402
-from harness.machine import simh                                  # noqa: E402
-
-RATE = 300000
 STEPS = 100_000_000                                       # 333 simulated seconds
 ROUNDS = 5
 SCRATCH = 0o3000
@@ -48,7 +46,7 @@ def program(io, clock=True):
     p.op(f"BR {outer:o}", 0o000400 | ((outer - p.here - 2) // 2 & 0o377))
 
     def servo(h):
-        for axis in range(4):
+        for axis in range(len(AXES)):
             h.mov_imm(axis, csr)
             h.op(f"MOV @#{inbuf:o},R1", 0o013701, inbuf)
             h.op("MOV #3634,R2", 0o012702, 0o3634)        # above 0: -100 codes
@@ -84,7 +82,7 @@ def best_rates(variants, rounds=ROUNDS):
 
 
 def main():
-    for sim in (forth_host_speed.PLAIN, forth_host_speed.GUIDED, simh.PDP11_STOCK):
+    for sim in (forth_host_speed.PLAIN, forth_host_speed.GUIDED, PDP11_STOCK):
         if not sim.exists():
             sys.exit(f"bench: {sim} missing: run make")
     active, idle, stock = program(io=True), program(io=False), program(io=False, clock=False)
@@ -94,7 +92,7 @@ def main():
             sys.exit(f"bench: hand-assembled words disagree with SIMH: {bad}")
     ips_active, ips_idle, ips_stock, ips_guided = best_rates([
         (active, forth_host_speed.PLAIN, "AAV11, X="), (idle, forth_host_speed.PLAIN, ""),
-        (stock, simh.PDP11_STOCK, ""), (active, forth_host_speed.GUIDED, "AAV11, X=")])
+        (stock, PDP11_STOCK, ""), (active, forth_host_speed.GUIDED, "AAV11, X=")])
     print(f"devices benchmark: {STEPS:,} instructions per run, best of {ROUNDS}, taking turns")
     print(f"  build/pdp11-plain, clock + plant active : {ips_active / 1e6:8.2f} M instructions/s")
     print(f"  build/pdp11-plain, clock, plant idle    : {ips_idle / 1e6:8.2f} M instructions/s")

@@ -14,12 +14,11 @@ Variants:
               runs did before: SIMH tests every instruction's address)
   guided      build/pdp11-guided (mk/pgo.mk), the CUE device"""
 import re
-import shutil
 import tempfile
 import time
-from pathlib import Path
 
-from harness.machine.scripted_machine import ROOT, ScriptedMachine
+from harness.machine.build import BUILD, fresh_disk
+from harness.machine.scripted_machine import ScriptedMachine
 
 ROUNDS = 5
 SIEVE = [
@@ -28,7 +27,7 @@ SIEVE = [
     "BEGIN DUP SIZE < WHILE 0 OVER FLAGS + C! OVER + REPEAT 2DROP 1+ THEN LOOP ;",
     ": SIEVE ( -- n ) 0 50 0 DO DROP PRIMES LOOP ;",
 ]
-PLAIN, GUIDED = ROOT / "build" / "pdp11-plain", ROOT / "build" / "pdp11-guided"
+PLAIN, GUIDED = BUILD / "pdp11-plain", BUILD / "pdp11-guided"
 VARIANTS = {"cue": (PLAIN, False), "breakpoint": (PLAIN, True), "guided": (GUIDED, False)}
 
 
@@ -39,8 +38,7 @@ def clock_time(m):
 def sieve_run(simulator, breakpoint):
     """(instructions, host seconds) of one `SIEVE .` line."""
     with tempfile.TemporaryDirectory() as tmp:
-        shutil.copy(ROOT / "build" / "robot.dsk", Path(tmp) / "robot.dsk")
-        with ScriptedMachine("robot.dsk", cwd=tmp, simulator=simulator,
+        with ScriptedMachine(fresh_disk(tmp).name, cwd=tmp, simulator=simulator,
                              cue_breakpoint=breakpoint) as m:
             for line in ["1000 LOAD"] + SIEVE:
                 m.line(line)

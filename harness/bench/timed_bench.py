@@ -14,16 +14,14 @@ taken in the simulator's table. Then the ten-pass Sieve and 1000 LOAD in both
 time bases (instruction counts / 300 000, and timed), and
 docs/servo.md's moves on x with Move.Complete?."""
 import re
-import shutil
 import tempfile
-from pathlib import Path
 
 from harness.analysis import timing
 from harness.analysis.servo_timing import setup_script
-from harness.machine.scripted_machine import ROOT, ScriptedMachine, feed_commands, read_kernel_map
-from harness.machine.simh import PDP11, PDP11_TIMED
+from harness.machine.build import DISK_NAME, PDP11, PDP11_TIMED, fresh_disk
+from harness.machine.kernel_layout import read_kernel_map
+from harness.machine.scripted_machine import ScriptedMachine, feed_commands
 
-DISK = ROOT / "build" / "robot.dsk"
 DEFINITIONS = [
     "CODE MARK NEXT, END-CODE",
     "CODE END-MARK NEXT, END-CODE",
@@ -41,9 +39,9 @@ def machine(tmp, timed):
     """A scripted run on a copy of the disk in `tmp`: timed (build/pdp11-timed,
     SET CLK TIMED) or by the count (build/pdp11)."""
     if timed:
-        return ScriptedMachine("robot.dsk", cwd=tmp, simulator=PDP11_TIMED,
+        return ScriptedMachine(DISK_NAME, cwd=tmp, simulator=PDP11_TIMED,
                                settings=("set clk timed",))
-    return ScriptedMachine("robot.dsk", cwd=tmp, simulator=PDP11)
+    return ScriptedMachine(DISK_NAME, cwd=tmp, simulator=PDP11)
 
 
 def show_time(m):
@@ -76,8 +74,7 @@ def timed_pass(tmp, definitions=DEFINITIONS):
 
 def priced_pass(tmp, mark, end, definitions=DEFINITIONS, instructions=1_000_000):
     """(seconds, instructions) of B-PASS untimed, priced from SIMH's history."""
-    disk = Path(tmp) / "priced.dsk"
-    shutil.copy(DISK, disk)
+    disk = fresh_disk(tmp, "priced.dsk")
     sym = read_kernel_map()
     lines = definitions + ["OCTAL ' MARK U. ' END-MARK U. DECIMAL"]
     setup = (setup_script(disk, lines) + f"deposit {sym['RXTAIL']:o} 0\n"
@@ -89,7 +86,7 @@ def priced_pass(tmp, mark, end, definitions=DEFINITIONS, instructions=1_000_000)
 def seconds_of(line, timed, before=()):
     """Simulated seconds `line` takes (SHOW CLK), timed or by the count."""
     with tempfile.TemporaryDirectory() as tmp:
-        shutil.copy(DISK, Path(tmp) / "robot.dsk")
+        fresh_disk(tmp)
         with machine(tmp, timed) as m:
             for b in before:
                 m.line(b, limit=600)
@@ -102,7 +99,7 @@ def move_seconds(timed):
     """Simulated seconds of docs/servo.md's moves on x (harness/bench/servo_runs.py's:
     4000 counts out, then 150 and 40 more), each line with Move.Complete?."""
     with tempfile.TemporaryDirectory() as tmp:
-        shutil.copy(DISK, Path(tmp) / "robot.dsk")
+        fresh_disk(tmp)
         with machine(tmp, timed) as m:
             m.line("1000 LOAD")
             m.line("Set.Up.Robot")
@@ -116,7 +113,7 @@ def move_seconds(timed):
 
 def main():
     with tempfile.TemporaryDirectory() as tmp:
-        shutil.copy(DISK, Path(tmp) / "robot.dsk")
+        fresh_disk(tmp)
         mark, end, timed = timed_pass(tmp)
         priced, instructions = priced_pass(tmp, mark, end)
     print("SET CLK TIMED against python -m harness timing: one Sieve pass (8190 flags)")

@@ -1,4 +1,4 @@
-"""SET CLK TIMED (pdp11-devices/kdf11_time.c and the one-line CPU patch): each
+"""SET CLK TIMED (pdp11-devices/simh/kdf11_time.c and the one-line CPU patch): each
 instruction advances simulated time by its KDF11-A time from the table that
 harness/analysis/kdf11.py prices by; with the mode off the patched CPU (build/pdp11-timed) counts as SIMH's stock one
 does."""
@@ -7,6 +7,7 @@ import re
 from harness.analysis import kdf11_table
 from harness.analysis.pdp11prog import Program, check_listing
 from harness.machine import simh
+from harness.machine.build import PDP11_STOCK, PDP11_TIMED
 
 LOOPS = 64
 
@@ -49,24 +50,24 @@ def test_the_program_is_what_simh_disassembles():
 
 def test_mode_off_counts_as_stock_simh_does():
     prog, executed = mixed_loop()
-    stock, ours = run(prog, simh.PDP11_STOCK), run(prog, simh.PDP11_TIMED)
+    stock, ours = run(prog, PDP11_STOCK), run(prog, PDP11_TIMED)
     assert time_of(stock) == time_of(ours) == len(executed)
     assert registers(stock) == registers(ours) and registers(ours)
 
 
 def test_timed_each_instruction_takes_its_kdf11_time():
     prog, executed = mixed_loop()
-    out = run(prog, simh.PDP11_TIMED, extra="set clk timed\n")
+    out = run(prog, PDP11_TIMED, extra="set clk timed\n")
     assert time_of(out) == sum(kdf11_table.units(w) for w in executed)   # 75 ns units
     assert "rate=13333333 units" in simh.run("set clk timed\nshow clk rate\n",
-                                             simulator=simh.PDP11_TIMED)
+                                             simulator=PDP11_TIMED)
     # MUL (33.075 us + register source 1.275) dominates: far from one count each
     assert time_of(out) > 10 * len(executed)
 
 
 def test_notimed_returns_to_the_rate_before():
     out = simh.run("set clk rate=150000\nset clk timed\nset clk notimed\nshow clk rate\n",
-                   simulator=simh.PDP11_TIMED)
+                   simulator=PDP11_TIMED)
     assert "rate=150000 instructions/s" in out
 
 

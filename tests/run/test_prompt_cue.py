@@ -1,11 +1,10 @@
-"""The scripted runs' stop at the prompt (pdp11-devices/prompt_cue.c): the CUE
+"""The scripted runs' stop at the prompt (pdp11-devices/simh/prompt_cue.c): the CUE
 device stops the simulator exactly where a SIMH breakpoint on the same address
 does, so transcripts, plant traces and instruction counts are the same; and it
 stops only there."""
-import shutil
-
+from harness.machine.build import fresh_disk
 from harness.machine.scripted_machine import ScriptedMachine
-from tests.run.common import PRISTINE, needs_build
+from tests.run.common import needs_build
 
 pytestmark = needs_build
 
@@ -18,8 +17,8 @@ LINES = ["1000 LOAD", "Set.Up.Robot", "800 800 0 0 Abs.Move", "NO-SUCH-WORD",
 def session(tmp_path, name, **options):
     work = tmp_path / name
     work.mkdir()
-    shutil.copy(PRISTINE, work / "robot.dsk")
-    with ScriptedMachine("robot.dsk", trace="trace.csv", cwd=work, **options) as m:
+    disk = fresh_disk(work)
+    with ScriptedMachine(disk.name, trace="trace.csv", cwd=work, **options) as m:
         out = [m.boot_output] + [m.line(text).output for text in LINES]
         out.append(m.wait(0.5).output)
         out += [m.simh("show clk"), m.simh("examine cue stops")]

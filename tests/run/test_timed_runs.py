@@ -7,7 +7,8 @@ import pytest
 
 from harness.bench import timed_bench
 from harness.cli import main
-from tests.run.common import PRISTINE, needs_build
+from harness.machine.build import fresh_disk
+from tests.run.common import needs_build
 
 pytestmark = needs_build
 
@@ -33,7 +34,7 @@ def test_two_timed_runs_give_the_same_transcript_and_trace(tmp_path):
 def test_a_timed_word_costs_what_timing_prices(tmp_path):
     definitions = timed_bench.DEFINITIONS[:2] + [
         ": B-PASS ( -- ) 6 PRIORITY! MARK 200 0 DO I 7 * 3 / DROP LOOP END-MARK 0 PRIORITY! ;"]
-    (tmp_path / "robot.dsk").write_bytes(PRISTINE.read_bytes())
+    fresh_disk(tmp_path)
     mark, end, timed = timed_bench.timed_pass(tmp_path, definitions)
     priced, instructions = timed_bench.priced_pass(tmp_path, mark, end, definitions, 20_000)
     assert instructions > 2000
