@@ -15,7 +15,10 @@
 # simulator twice more and a training run in every first build (about 15 s of
 # CPU on this machine). `make bench-devices` builds and times it.
 PGO ?= 0
-PGO_CFLAGS := -O3 -flto=auto
+# both passes at -O3: the profile is read after the early inliner, whose choices
+# the optimisation level changes (gripper.c's counters did not match at -O2/-O3)
+PGO_OPT    := -O3
+PGO_CFLAGS := $(PGO_OPT) -flto=auto
 PGO_GEN := $(BUILD)/obj/pgo-gen
 PGO_USE := $(BUILD)/obj/pgo-use
 PGO_SIMH := $(patsubst %.c,%.o,$(SIMH_COMMON) $(SIMH_PDP11))
@@ -38,10 +41,10 @@ $(1)/dev/%.o: $$(DEV_DIR)/%.c $$(DEV_HDRS) $$(SIMH_STAMP) $$(KDF11_TABLE)
 	  -c $$< -o $$@
 endef
 
-$(eval $(call pgo_objects,$(PGO_GEN),-fprofile-generate -fprofile-update=single,true))
+$(eval $(call pgo_objects,$(PGO_GEN),-fprofile-generate -fprofile-update=single $(PGO_OPT),true))
 # guided: each object's profile copied beside it (gcc looks for it by the
 # object's own path); a file the training never reached compiles as plain -O2
-PGO_COPY = { cp $(PGO_GEN)/$$*.gcda $$(@:.o=.gcda) 2>/dev/null || true; }
+PGO_COPY = { cp $$(subst $(PGO_USE)/,$(PGO_GEN)/,$$(@:.o=.gcda)) $$(@:.o=.gcda) 2>/dev/null || true; }
 $(eval $(call pgo_objects,$(PGO_USE),-fprofile-use -fprofile-correction -Wno-missing-profile $(PGO_CFLAGS),$(PGO_COPY)))
 $(addprefix $(PGO_USE)/,$(PGO_SIMH) $(PGO_DEVS)): $(PGO_PROFILE)
 
