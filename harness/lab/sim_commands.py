@@ -48,7 +48,7 @@ SETTABLE = {   # device: (its modifiers in table order, those the page may set)
     "PLANT": (("X", "Y", "Z", "T", "KV", "TAU", "AMAX", "VMAX", "OFFSET", "PMIN", "PMAX",
                "WALK", "POS", "GRIPPER", "OBJECT", "PULLOUT", "OPENING", "PARTX", "PARTY",
                "PARTZ", "SEED", "SAMPLE", "POWER"), None),     # None: all
-    "CLK": (("RATE", "REALTIME", "NOREALTIME"), None),
+    "CLK": (("RATE", "REALTIME", "NOREALTIME", "TIMED", "NOTIMED"), None),
     "LAB": (("SPEED",), None),
 }
 # Devices whose units SIMH backs with host files (disks, tapes, paper tape, cards,
@@ -59,7 +59,7 @@ FILE_DEVICES = ("PTR", "PTP", "CR", "LPT", "DZ", "VH", "RC", "RF", "RK", "RL", "
                 "RX", "RY", "RP", "RQ", "RQB", "RQC", "RQD", "TC", "TM", "TS", "TQ",
                 "TU", "TA", "XQ", "XQB", "XU", "XUB", "DLI", "DLO", "DCI", "DCO")
 REGISTER_DEVICES = ("CPU", "SYSTEM", "RHA", "RHB", "PCLK", "CLK", "TTI", "TTO", "KE", "KG", "DRV11",
-                    "AAV11", "PLANT", "LAB")
+                    "AAV11", "PLANT", "LAB", "CUE")
 
 
 def words(text):
