@@ -102,8 +102,9 @@ def test_pacing_pausing_and_stepping_change_nothing_the_machine_does(tmp_path, c
             while len(paused_at()) < n and time.monotonic() < deadline:
                 time.sleep(0.02)       # each step once the last one has paused
             ctl(command + "\n")
-    ctl("speed 100\npause\n")
+    ctl("speed 100\npanel 7160\npause\n")       # the front panel's rows too
     watched, watched_out = run_servo(tmp_path, "watched", lab, user)
+    assert rows(lab, "R")
     assert watched == plain
     assert watched_out.replace(str(tmp_path / "watched"), "") == plain_out.replace(
         str(tmp_path / "plain"), "")
