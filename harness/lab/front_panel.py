@@ -43,6 +43,11 @@ class WordIndex:
                 self.by_address.setdefault(code_field(lfa, count & LENGTH), name)
         self._sorted = sorted(self.by_address)
 
+    def address_of(self, name):
+        """The code field of the newest word called `name` (case ignored), or None."""
+        found = [a for a, n in self.by_address.items() if n.upper() == name.upper()]
+        return max(found) if found else None
+
     def name_at(self, address):
         return self.by_address.get(address)
 

@@ -13,7 +13,7 @@ from pathlib import Path
 
 from aiohttp import WSMsgType, web
 
-from harness.lab import guard, shell_terminal
+from harness.lab import breakpoints, guard, shell_terminal
 from harness.lab.feed import plant_row, thin, words_of
 from harness.lab.front_panel import PANEL_WORDS, WordIndex, panel
 from harness.lab.rack_hint import RackHint
@@ -50,6 +50,7 @@ class Lab:
         self.words = WordIndex({address: name for name, address in symbols.items()})
         self.panel_command = "panel " + " ".join(f"{symbols[name] + BODY:o}" for name in PANEL_WORDS)
         self.panel = None                # the 11/23's front panel (front_panel.py)
+        self._console_tail = b""
         self.pages = set()
         self.scrollback = bytearray()
         self.rows = []
@@ -64,6 +65,29 @@ class Lab:
         if self.shell_echo:
             self.shell_echo(data)
         self.to_pages(data)
+        self._console_tail = (self._console_tail + data)[-64:]
+        if breakpoints.HIT.search(self._console_tail):       # a breakpoint of the page's
+            self._console_tail = b""
+            asyncio.ensure_future(self.show_history())
+
+    async def show_history(self):
+        """The instructions before a breakpoint, each with its word, to the pages."""
+        text = await self._at_sim([f"show cpu history={breakpoints.SHOWN}"])
+        self.broadcast({"t": "history", "rows": breakpoints.named_history(text, self.words)})
+
+    async def set_break(self, word):
+        lines, said = breakpoints.break_lines(self.words, word)
+        self.on_console(f"\r\n[lab] {said}\r\n".encode())
+        if lines:
+            await self._at_sim(lines)
+
+    async def _at_sim(self, lines):
+        try:
+            return await self.sim.simh_lines(lines)
+        except asyncio.TimeoutError:                  # paused by the page: SIMH waits
+            self.on_console(b"\r\n[lab] SIMH did not come to its prompt (paused? Run "
+                            b"first)\r\n")
+            return ""
 
     def to_pages(self, data):
         self.scrollback += data
@@ -146,6 +170,10 @@ class Lab:
             self.sim.command(f"power {message['v']}")
         elif kind in ("pause", "run", "step"):
             self.sim.command(kind)
+        elif kind == "break":                # a breakpoint on a FORTH word (breakpoints.py)
+            asyncio.ensure_future(self.set_break(message.get("word")))
+        elif kind == "nobreak":
+            asyncio.ensure_future(self._at_sim(breakpoints.clear_lines()))
 
 
 def frame_interval(speed):

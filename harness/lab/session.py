@@ -20,7 +20,8 @@ from harness.lab.sim_prompt_guard import SimPromptGuard, prompt_termios
 from harness.machine import plant_rows, simh
 from harness.machine.build import KERNEL, ROOT
 from harness.machine.console_session import RACK_OFF, leave, say
-from harness.machine.console_watch import Leave, LineWatcher
+from harness.machine.console_watch import SIM_PROMPT, Leave, LineWatcher
+from harness.machine.simh_command import RUNS, simh_command
 
 SPEEDS = {"real": 1, "x10": 10, "full": 0}
 READ_CHUNK = 1 << 16
@@ -44,6 +45,9 @@ class Simulator:
         self.tmp = tempfile.TemporaryDirectory(prefix="lab-")
         self.watcher = LineWatcher()
         self.guard = SimPromptGuard(self.watcher)     # the page's keys pass through it
+        self.prompted = asyncio.Event()              # SIMH printed its prompt (simh_lines)
+        self.capture = None                          # what SIMH prints, while simh_lines reads it
+        self._tail = b""
         self.child = None
         self.fds = {}
         self.leaving = False
@@ -82,6 +86,11 @@ class Simulator:
             at_prompt = self.watcher.at_simh
             self.watcher.output(data)             # is SIMH's sim> up?
             console(data)
+            if self.capture is not None:
+                self.capture += data
+            self._tail = (self._tail + data)[-len(SIM_PROMPT):]
+            if self._tail == SIM_PROMPT:
+                self.prompted.set()
             if self.watcher.at_simh and not at_prompt:
                 self.page_keys(b"")               # the page's keys that waited for it
         self._watch(loop, "pty", read_console)
@@ -145,6 +154,28 @@ class Simulator:
             asyncio.get_running_loop().create_task(self.close(way.how))
             return
         self._act(actions)
+
+    async def simh_lines(self, lines, wait_s=10):
+        """Type `lines` at sim> as the page would (through the guard), after a ^E
+        when the machine runs; a line that runs the machine (CONT) ends the list.
+        What SIMH printed for the last line answered at its prompt."""
+        if self.leaving or self.child is None:
+            return ""
+        if not self.watcher.at_simh:
+            self.prompted.clear()
+            self.page_keys(b"\x05")
+            await asyncio.wait_for(self.prompted.wait(), wait_s)
+        answer = ""
+        for line in lines:
+            self.prompted.clear()
+            self.capture = bytearray()
+            self.page_keys(line.encode() + b"\r")
+            if simh_command(line) in RUNS:
+                break
+            await asyncio.wait_for(self.prompted.wait(), wait_s)
+            answer = self.capture.decode("latin-1")
+        self.capture = None
+        return answer
 
     def _act(self, actions):
         for kind, data in actions:

@@ -138,6 +138,8 @@ def _to_forth_prompt(child, gone, busy_wait):
     i = child.expect([b" ok\r\n", b"sim> ", pexpect.TIMEOUT, pexpect.EOF,
                       b" compiled\r\n"], timeout=busy_wait)
     if i == 1:                                   # SIMH had the machine stopped
+        child.send(b"nobreak all\n")             # a breakpoint would stop it again
+        child.expect(b"sim> ", timeout=15)
         child.send(b"cont\n")
         return probe_prompt(child)
     if i == 4:                                   # FLUSH typed now would be compiled

@@ -159,6 +159,26 @@ def test_the_badge_says_when_simh_has_the_machine_stopped(page):
     wait_for("the badge", lambda: page.find_element(By.ID, "state").text.startswith("RUN"))
 
 
+def test_a_breakpoint_on_a_word_stops_the_machine_and_shows_the_history(page):
+    field = page.find_element(By.ID, "break-word")
+    field.send_keys(".")                             # the word that prints a number
+    click(page, '#break-form button[type="submit"]')
+    wait_for("the run again", lambda: page.find_element(By.ID, "state").text.startswith("RUN"))
+    page.execute_script("return new Promise(r => setTimeout(r, 500))")   # CONT's input flush
+    page.find_element(By.CSS_SELECTOR, "#terminal textarea").send_keys("5 .\n")
+    shown = wait_for("the history", lambda: page.find_element(By.ID, "history").is_displayed())
+    assert shown and page.find_element(By.ID, "state").text == "STOPPED sim>"
+    text = page.find_element(By.ID, "history-text").text
+    assert "in word" in text and len(text.splitlines()) > 5
+    assert all(row[3] for row in js(page, "window.lab.history"))
+    page.save_screenshot(str(ARTIFACTS / "lab-breakpoint.png"))
+    click(page, "#history-close")
+    before = js(page, "window.lab.screen()").count("5  ok")
+    click(page, "#nobreak")                          # cleared: the line's answer comes
+    wait_for("5  ok", lambda: js(page, "window.lab.screen()").count("5  ok") > before)
+    page.find_element(By.CSS_SELECTOR, "#terminal textarea").click()
+
+
 def test_bye_in_the_page_leaves_and_flushes(page, lab_server):
     page.find_element(By.CSS_SELECTOR, "#terminal textarea").send_keys("BYE\n")
     assert lab_server.proc.wait(timeout=60) == 0

@@ -3,6 +3,7 @@ running lab, the registers, the words named from the dictionary, the block and
 line being loaded, and the bus devices' registers reaching the page."""
 import asyncio
 import json
+import re
 
 from harness.lab.dictionary import Memory
 from harness.lab.front_panel import WordIndex, decode_psw, panel
@@ -61,3 +62,50 @@ def test_the_page_gets_the_panel_while_the_blocks_load(lab_server):
     assert last["pc_in"] and last["ip_in"]                  # named from the dictionary
     devices = {f'{d["device"]} {d["register"]}': d["value"] for d in last["devices"]}
     assert devices["AAV11-A DAC X"] == "4000" and len(devices["KW11-L LKS"]) == 6
+
+
+async def until_message(page, wanted, timeout=30):
+    """The first message `wanted` accepts; console output on the way is kept."""
+    loop = asyncio.get_running_loop()
+    deadline = loop.time() + timeout
+    while loop.time() < deadline:
+        message = json.loads((await page.ws.receive(timeout=timeout)).data)
+        if message["t"] == "con":
+            page.screen += message["d"]
+        if wanted(message):
+            return message
+    raise AssertionError(f"no such message in {timeout} s; console:\n{page.screen[-1500:]}")
+
+
+def test_a_breakpoint_on_a_forth_word_stops_with_its_history(lab_server):
+    """The page names a word; the lab breaks on its code field (through sim>'s own
+    SET CPU HISTORY, BREAK and CONT); when the word runs, the page gets the
+    instructions before it, each with the word its PC lies in; clearing the
+    breakpoint lets the run go on, the word's answer intact."""
+    async def steps(page):
+        start = len(page.screen)
+        await page.type(": TWICE ( n -- 2n ) DUP + ;\r")
+        await page.until(r"ok\r\n", start)
+        start = len(page.screen)
+        for _ in range(20):               # until the lab has read the new dictionary
+            await page.ws.send_str(json.dumps({"t": "break", "word": "twice"}))
+            said = await page.until(r"\[lab\] (breakpoint on|no word) [^\r]*\r", len(page.screen))
+            if "breakpoint on" in said:
+                break
+            await asyncio.sleep(0.5)
+        await page.until(r"sim> cont", start)
+        await asyncio.sleep(0.5)                        # CONT's flush of typed-ahead keys
+        await page.type("3 TWICE .\r")
+        history = (await until_message(page, lambda m: m["t"] == "history"))["rows"]
+        said = page.screen[start:]
+        await page.ws.send_str(json.dumps({"t": "nobreak"}))
+        await page.until(r"nobreak all[\s\S]*6  ok", start)
+        await page.ws.send_str(json.dumps({"t": "break", "word": "No.Such.Word"}))
+        await page.until(r"no word No.Such.Word in the dictionary", start)
+        return said, history
+    said, history = session(lab_server, steps)
+    address = re.search(r"breakpoint on twice at ([0-7]{6})", said).group(1)
+    assert f"Breakpoint, PC: {address}" in said
+    assert len(history) > 5 and all(len(row[0]) == 6 and row[2] for row in history)
+    names = [row[3] for row in history]
+    assert all(names) and len(set(names)) > 1       # each PC named: the interpreter's words

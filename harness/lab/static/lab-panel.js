@@ -1,7 +1,9 @@
 // The 11/23's front panel (harness/lab/front_panel.py): the registers with their
 // FORTH roles, the PSW's fields, the words running (named from the dictionary),
 // the block and line being loaded, the bus devices' registers in octal. Redrawn
-// ten times a second when a new panel came (none comes while paused).
+// ten times a second when a new panel came (none comes while paused). Below it, a
+// breakpoint on a FORTH word (harness/lab/breakpoints.py); when it is hit, the
+// instructions before it, each with its word (showHistory, from lab.js).
 "use strict";
 
 (() => {
@@ -33,4 +35,23 @@
   setInterval(() => {
     if (lab.panel && lab.panel !== shown) { shown = lab.panel; render(shown); }
   }, 100);
+  document.getElementById("break-form").addEventListener("submit", (event) => {
+    event.preventDefault();
+    const word = document.getElementById("break-word").value.trim();
+    if (word) send({ t: "break", word });
+  });
+  document.getElementById("nobreak").addEventListener("click", () => send({ t: "nobreak" }));
+  document.getElementById("history-close").addEventListener("click", () => {
+    document.getElementById("history").hidden = true;
+  });
 })();
+
+function showHistory(rows) {        // SHOW CPU HISTORY's rows: PC, PSW, instruction, word
+  lab.history = rows;
+  const lines = rows.map(([pc, psw, what, word]) =>
+    `${pc} ${psw}  ${what.padEnd(36).slice(0, 36)} ${word || ""}`);
+  document.getElementById("history-text").textContent =
+    "PC     PSW     instruction                          in word\n" + lines.join("\n");
+  document.getElementById("history").hidden = false;
+}
+

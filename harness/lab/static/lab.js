@@ -57,6 +57,7 @@ socket.onmessage = (event) => {
   const m = JSON.parse(event.data);
   if (m.t === "con") term.write(m.d);
   else if (m.t === "data") takeData(m);
+  else if (m.t === "history") showHistory(m.rows);   // lab-panel.js
   else if (m.t === "hello") {
     learnPlant(m.plant);
     Object.assign(lab, { stops: m.stops, perAxis: m.per_axis, single: m.single, status: m.status });
