@@ -78,7 +78,7 @@ VARIABLE ERR-IN  ( -- a ) \ >IN then
   RP@ 12 + RP!  0 ;  \ drop the saved SP and the saved source
 : THROW  ( k*x code -- k*x | i*x code )  \ EXCEPTION
   ?DUP IF
-    DUP -256 = IF DISARM 0 PRIORITY! THEN  \ a trap arrives at priority 7
+    DUP -256 = IF DISARM 0 PRIORITY! TRAP-CODE THEN  \ a trap arrives at priority 7
     BLK @ ERR-BLK !  >IN @ ERR-IN !
     HANDLER @ 0= IF RP0 RP! ABORT-TO-QUIT THEN  \ no CATCH frame: nothing on the
     \ return stack is needed, however broken it is

@@ -21,15 +21,15 @@ VARIABLE TEMP-END  ( -- a ) \ HERE above the code while it runs, 0 = none runs
   TEMP-END @ IF TEMP-END @ HERE = IF TEMP-HERE @ DP ! THEN 0 TEMP-END ! THEN ;
 : TEMP-END?  ( -- )  \ structure closed (by a word compiling): run it, forget it
   TEMP-DEPTH @ STATE @ AND IF DEPTH 1+ TEMP-DEPTH @ = IF
-    ['] EXIT ,  POSTPONE [  0 TEMP-DEPTH !  HERE TEMP-END !  TEMP-START @ EXECUTE
+    ['] EXIT ,  POSTPONE [  0 TEMP-DEPTH !  HERE TEMP-END !  TEMP-START @ (EXECUTE)
     TEMP-FORGET
   THEN THEN ;
 : INTERPRET  ( -- )
   BEGIN PARSE-NAME DUP WHILE
     2DUP WHAT 2!  2DUP SEARCH-NAME ?DUP IF
       NIP NIP DUP NAME> SWAP C@
-      STATE @ IF 128 AND IF EXECUTE ELSE COMPILE, THEN
-      ELSE 64 AND IF OPENER? 0= IF -14 THROW THEN TEMP-BEGIN THEN EXECUTE THEN
+      STATE @ IF 128 AND IF (EXECUTE) ELSE COMPILE, THEN
+      ELSE 64 AND IF OPENER? 0= IF -14 THROW THEN TEMP-BEGIN THEN (EXECUTE) THEN
     ELSE NUMBER THEN
     ?STACK TEMP-END?
   REPEAT 2DROP ;
@@ -49,6 +49,35 @@ VARIABLE BEST  ( -- a )
     4 0 DO DUP 8 - I 2* + @ ROT SWAP BEST-IN SWAP LOOP @
   REPEAT THEN DROP BEST @ ;
 : >NAME  ( xt -- nfa | 0 )  DUP WORD-AT DUP IF TUCK NAME> <> IF DROP 0 THEN ELSE NIP THEN ;
+\ EXECUTE runs only an execution token: a code field the kernel or a defining
+\ word laid down. A colon, CREATE, VARIABLE, CONSTANT, DOES> or SYNONYM code
+\ field is recognised by its JSR or JMP and where it leads (a few instructions);
+\ anything else must be a CODE word's, which its header proves (>NAME: the
+\ headers above it are skipped, one comparison each). Data (VARIABLE v  v
+\ EXECUTE) or a number is error -258 instead of a run into it.
+: XT-HEADER  ( xt -- xt )  DUP >NAME 0= IF -258 THROW THEN ;
+CODE (RESUME)  ( xt -- ) ( R: ip -- )  IP RP )+ MOV,  R0 S )+ MOV,  R0 ) JMP,  END-CODE
+CODE EXECUTE  ( xt -- )  \ CORE
+  R0 S ) MOV,
+  BEGIN,  \ through SYNONYMs (JMP @#xt) to the word itself
+    ?ODD,  ORIGIN # R0 CMP,  LO IF,  -258 THROW,  THEN,
+    ' DP >BODY @# R0 CMP,  HIS IF,  -258 THROW,  THEN,
+    137O # R0 ) CMP,
+  EQ WHILE,  R0 2 R0 I) MOV,  REPEAT,
+  4437O # R0 ) CMP,  EQ IF,  \ JSR IP: a colon definition
+    DOCOL # 2 R0 I) CMP,  EQ IF,  S 2 # ADD,  R0 ) JMP,  THEN,
+    -258 THROW,
+  THEN,
+  4237O # R0 ) CMP,  EQ IF,  \ JSR W: CREATE, CONSTANT, or a DOES> child
+    T 2 R0 I) MOV,  DOVAR # T CMP,  EQ IF,  S 2 # ADD,  R0 ) JMP,  THEN,
+    DOCON # T CMP,  EQ IF,  S 2 # ADD,  R0 ) JMP,  THEN,
+    T 1 # BIT,  EQ IF,  ORIGIN # T CMP,  HIS IF,  ' DP >BODY @# T CMP,  LO IF,
+      4437O # T ) CMP,  EQ IF,  DODOES # 2 T I) CMP,  EQ IF,  S 2 # ADD,  R0 ) JMP,  THEN,  THEN,
+    THEN,  THEN,  THEN,
+    -258 THROW,
+  THEN,
+  S ) R0 MOV,  RP -) IP MOV,  IP HERE 6 + # MOV,  NEXT,  ' XT-HEADER ,  ' (RESUME) ,
+  END-CODE
 : .NAME  ( nfa -- )  COUNT 31 AND TYPE ;
 : .OCTAL  ( u -- )  BASE @ >R 8 BASE ! 0 <# # # # # # # #> TYPE R> BASE ! ;
 
@@ -60,9 +89,20 @@ VARIABLE TRAP-WORD  ( -- a ) \ the word holding its PC, 0 = none
   -1 DISARMED !  0 TRAP-WORD !  TRAP-VEC @ TRAP-SEEN !  -1 TRAP-VEC !
   TRAP-SEEN @ 0< IF EXIT THEN  \ an interrupt handler that trapped leaves its vector
   TRAP-PC @ WORD-AT DUP TRAP-WORD !  ?DUP 0= IF EXIT THEN
-  1000O 0 DO  \ only vectors something was installed in: a lookup each
+  1000O 100O DO  \ only vectors a program installed (! refuses 0-77): a lookup each
     I @ STUBS I + <> IF I @ WORD-AT OVER = IF STUBS I + I !  I DISARMED ! THEN THEN
   4 +LOOP DROP ;
+\ A memory management abort on page 6 is an access beyond S0 (boot.fs sets
+\ the page's length there): a word took more than the data stack held. It
+\ becomes error -4, stack underflow, like gforth's; the access was aborted, so
+\ nothing was written. Any other trap may have followed a wild run: 'ON-TRAP
+\ (disk.fs: the UPDATEd buffers) checks what it could have damaged.
+VARIABLE 'ON-TRAP  ( -- a ) \ xt run after a trap (0 = none)
+: TRAP-CODE  ( -256 -- code )
+  TRAP-SEEN @ MMU-VECTOR = IF
+    MMR0 @  1 MMR0 !  40176O AND 40014O = IF DROP -4  -1 TRAP-SEEN ! EXIT THEN
+  THEN
+  TRAP-SEEN @ 0< 0= IF 'ON-TRAP @ ?DUP IF EXECUTE THEN THEN ;
 : .DISARMED  ( -- )
   DISARMED @ DUP 0< IF DROP EXIT THEN
   ." ; vector " .OCTAL ."  restored to its default handler"  -1 DISARMED ! ;
@@ -74,7 +114,8 @@ VARIABLE TRAP-WORD  ( -- a ) \ the word holding its PC, 0 = none
     DUP 30O = IF ." EMT trap" ELSE
     DUP 34O = IF ." TRAP instruction" ELSE
     DUP 24O = IF ." power fail" ELSE
-    ." unexpected interrupt" THEN THEN THEN THEN THEN THEN THEN
+    DUP MMU-VECTOR = IF ." memory management abort" ELSE
+    ." unexpected interrupt" THEN THEN THEN THEN THEN THEN THEN THEN
   ."  (vector " .OCTAL ." , PC " TRAP-PC @ .OCTAL
   TRAP-WORD @ ?DUP IF ."  in " .NAME THEN  .DISARMED ." )" ;
 \ The messages of the error codes: code, counted string, aligned; 0 ends it.
@@ -103,6 +144,9 @@ CREATE ERROR-TEXTS  ( -- a )
   -35 , ," no such block"
   -49 , ," search-order overflow"
   -50 , ," search-order underflow"
+  -257 , ," return stack unbalanced (EXIT into data)"
+  -258 , ," not an execution token"
+  -259 , ," protected address (the kernel's trap and console vectors)"
   0 ,
 : .ERROR-TEXT  ( code -- )
   DUP -2 = IF DROP ABORT-MSG @ COUNT TYPE EXIT THEN
@@ -134,8 +178,7 @@ CREATE ERROR-TEXTS  ( -- a )
 : DISCARD-DEFINITION  ( -- )  \ a definition cut short leaves nothing behind
   STATE @ IF COLON-LFA @ ?DUP IF UNLINK THEN THEN
   0 COLON-LFA !  NO-LOOPS  TEMP-DEPTH @ IF TEMP-HERE @ UNLINK  0 TEMP-DEPTH ! THEN  TEMP-FORGET ;
-: CLEAR-STACK  ( -- )  \ empty, and the slack below S0 zeroed: a word run on an
-  S0 SP!  S0 16 ERASE ;  \ empty stack finds 0 (no address, no count) there
+: CLEAR-STACK  ( -- )  S0 SP! ;  \ empty (what is beyond S0 traps: MMU-TRAP)
 : CONTEXT-AFTER-ERROR  ( -- )  \ FORTH-79: CONTEXT := CURRENT; an empty order: the boot one
   #ORDER @ 0= IF ONLY ALSO THEN  CURRENT @ VOC-CONTEXT ;
 : RESET-AFTER-ERROR  ( -- )
