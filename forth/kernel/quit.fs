@@ -95,14 +95,13 @@ VARIABLE TRAP-WORD  ( -- a ) \ the word holding its PC, 0 = none
 \ A memory management abort on page 6 is an access beyond S0 (boot.fs sets
 \ the page's length there): a word took more than the data stack held. It
 \ becomes error -4, stack underflow, like gforth's; the access was aborted, so
-\ nothing was written. Any other trap may have followed a wild run: 'ON-TRAP
-\ (disk.fs: the UPDATEd buffers) checks what it could have damaged.
-VARIABLE 'ON-TRAP  ( -- a ) \ xt run after a trap (0 = none)
+\ nothing was written. Any other trap may have followed a wild run:
+\ CHECK-BUFFERS (disk.fs) sets aside the UPDATEd buffers it could have damaged.
 : TRAP-CODE  ( -256 -- code )
   TRAP-SEEN @ MMU-VECTOR = IF
     MMR0 @  1 MMR0 !  40176O AND 40014O = IF DROP -4  -1 TRAP-SEEN ! EXIT THEN
   THEN
-  TRAP-SEEN @ 0< 0= IF 'ON-TRAP @ ?DUP IF EXECUTE THEN THEN ;
+  TRAP-SEEN @ 0< 0= IF CHECK-BUFFERS THEN ;
 : .DISARMED  ( -- )
   DISARMED @ DUP 0< IF DROP EXIT THEN
   ." ; vector " .OCTAL ."  restored to its default handler"  -1 DISARMED ! ;
