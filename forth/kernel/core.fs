@@ -94,7 +94,10 @@ VARIABLE ABORT-MSG  ( -- a ) \ counted message of the last ABORT"
 : UNUSED  ( -- n )  DICT-END @ HERE - 160 - ;  \ CORE EXT
 : ALLOT  ( n -- )  \ CORE: n signed; nothing allotted on an error
   DUP 0< IF DUP NEGATE HERE FENCE @ - U> IF -9 THROW THEN  \ never below the kernel
-  ELSE DUP UNUSED U> IF -8 THROW THEN THEN  DP +! ;
+    DP +!  HERE LAST @ NAME> 4 + U< IF  \ into the newest header: that word and
+      LAST @ 2- HERE 2DUP U< IF SWAP THEN DROP (FORGET)  \ any above HERE are
+    THEN EXIT                                           \ forgotten, as by FORGET
+  THEN  DUP UNUSED U> IF -8 THROW THEN  DP +! ;
 : ,  ( x -- )  HERE 2 ALLOT ! ;  \ CORE
 : C,  ( c -- )  HERE 1 ALLOT C! ;  \ CORE
 : ALIGN  ( -- )  HERE 1 AND ALLOT ;  \ CORE

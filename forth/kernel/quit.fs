@@ -6,23 +6,33 @@ VARIABLE 'ON-ERROR  ( -- a ) \ xt run after every error (0 = none)
 : ?STACK  ( -- )
   SP@ S0 U> IF -4 THROW THEN  SP@ S-LIMIT 16 + U< IF -3 THROW THEN ;
 \ Control structures typed at the terminal (0 3 DO I . -1 +LOOP): an opening
-\ IF BEGIN DO ?DO in interpret state starts a temporary definition at HERE;
-\ when the structure closes it runs with HERE above it (PAD, the pictured
-\ number buffer and WORD's buffer must not overwrite it), then HERE is put back.
+\ IF BEGIN DO ?DO in interpret state starts a temporary definition, compiled
+\ 1 KB below the dictionary's end, not at HERE: what it lays down with , or
+\ ALLOT when it runs (CREATE tbl 3 0 DO I , LOOP) goes to HERE as typed
+\ outside it would. While it runs the dictionary ends below it (DICT-END), so
+\ ALLOT cannot reach it; afterwards the space is free again.
+1024 CONSTANT TEMP-ROOM  ( -- n ) \ the temporary definition and PAD's room above HERE
 VARIABLE TEMP-DEPTH  ( -- a ) \ depth+1 when it started, 0 = none
-VARIABLE TEMP-START  ( -- a ) \ where its code starts (HERE aligned)
-VARIABLE TEMP-HERE  ( -- a ) \ HERE before it, put back afterwards
-VARIABLE TEMP-END  ( -- a ) \ HERE above the code while it runs, 0 = none runs
+VARIABLE TEMP-START  ( -- a ) \ where its code starts
+VARIABLE TEMP-HERE  ( -- a ) \ HERE before it, put back when it runs
+VARIABLE TEMP-END  ( -- a ) \ DICT-END before the outermost run, 0 = none runs
+VARIABLE TEMP-HEAP  ( -- a ) \ HEAP then: a heap the run created keeps DICT-END
 : OPENER?  ( xt -- xt f )
   DUP ['] IF = OVER ['] BEGIN = OR OVER ['] DO = OR OVER ['] ?DO = OR ;
 : TEMP-BEGIN  ( xt -- xt )  \ xt is still on the stack: DEPTH counts it (the +1)
-  HERE TEMP-HERE !  ALIGN HERE TEMP-START !  'DOCOL JSR-IP CF,  DEPTH TEMP-DEPTH !  ] ;
-: TEMP-FORGET  ( -- )  \ unless what it ran allotted or defined something
-  TEMP-END @ IF TEMP-END @ HERE = IF TEMP-HERE @ DP ! THEN 0 TEMP-END ! THEN ;
-: TEMP-END?  ( -- )  \ structure closed (by a word compiling): run it, forget it
+  HERE TEMP-HERE !  DICT-END @ TEMP-ROOM - -2 AND
+  DUP HERE 160 + U< IF -8 THROW THEN  DUP TEMP-START ! DP !
+  'DOCOL JSR-IP CF,  DEPTH TEMP-DEPTH !  ] ;
+: TEMP-FORGET  ( -- )  \ after an error in a run: the dictionary's end back
+  TEMP-END @ IF HEAP @ TEMP-HEAP @ = IF TEMP-END @ DICT-END ! THEN 0 TEMP-END ! THEN ;
+: TEMP-RUN  ( -- )  \ HERE back where it was, the dictionary ending below the code
+  TEMP-HERE @ DP !  DICT-END @  TEMP-END @ 0=  ( end outermost? )
+  DUP IF OVER TEMP-END !  HEAP @ TEMP-HEAP ! THEN  2>R
+  TEMP-START @ DUP DICT-END !  (EXECUTE)
+  2R> SWAP HEAP @ TEMP-HEAP @ = IF DICT-END ! ELSE DROP THEN  IF 0 TEMP-END ! THEN ;
+: TEMP-END?  ( -- )  \ structure closed (by a word compiling): run it
   TEMP-DEPTH @ STATE @ AND IF DEPTH 1+ TEMP-DEPTH @ = IF
-    ['] EXIT ,  POSTPONE [  0 TEMP-DEPTH !  HERE TEMP-END !  TEMP-START @ (EXECUTE)
-    TEMP-FORGET
+    ['] EXIT ,  POSTPONE [  0 TEMP-DEPTH !  TEMP-RUN
   THEN THEN ;
 : INTERPRET  ( -- )
   BEGIN PARSE-NAME DUP WHILE
@@ -132,6 +142,7 @@ CREATE ERROR-TEXTS  ( -- a )
   -15 , ," cannot forget kernel words"
   -16 , ," name expected"
   -17 , ," pictured numeric output too long"
+  -18 , ," string longer than 256 characters"
   -19 , ," name longer than 31 characters"
   -21 , ," unsupported operation (a DEFER without an action?)"
   -22 , ," unbalanced control structure"
