@@ -80,8 +80,9 @@ VARIABLE ERR-IN  ( -- a ) \ >IN then
   ?DUP IF
     DUP -256 = IF DISARM 0 PRIORITY! TRAP-CODE THEN  \ a trap arrives at priority 7
     BLK @ ERR-BLK !  >IN @ ERR-IN !
-    HANDLER @ 0= IF RP0 RP! ABORT-TO-QUIT THEN  \ no CATCH frame: nothing on the
-    \ return stack is needed, however broken it is
+    HANDLER @ RP@ RP0 WITHIN 0= IF 0 HANDLER ! THEN  \ a frame below RP is stale
+    HANDLER @ 0= IF RP0 RP! ABORT-TO-QUIT THEN  \ (: X R> DROP ; ' X CATCH left
+    \ it); no CATCH frame: nothing on the return stack is needed, however broken
     HANDLER @ RP!  R> HANDLER !  R> SWAP >R SP! DROP R>
     R> SRC-ID !  R> BLK !  R> >IN !  R> R> SRC 2! THEN ;
 VARIABLE ABORT-MSG  ( -- a ) \ counted message of the last ABORT"

@@ -213,4 +213,5 @@ CREATE RS-GUARD  ( -- a )  ' RS-EMPTY ,
   R> .ERROR  RESET-AFTER-ERROR  QUIT ;                   \ for the report
 : QUIT  ( -- )  \ CORE: read, interpret: forever. An error is a THROW with no CATCH
   RS-GUARD RP0 !  RP0 RP!  0 HANDLER !  POSTPONE [  0 BLK !  0 PRIORITY!  \ frame:
-  BEGIN INTERPRET-LINE .PROMPT AGAIN ;         \ it reports, resets, QUITs again
+  BEGIN 0 HANDLER ! INTERPRET-LINE .PROMPT AGAIN ;  \ it reports, resets, QUITs
+  \ again; no CATCH frame outlives a line (a word that dropped CATCH's return)
