@@ -101,10 +101,14 @@ CODE 2+  ( n -- n+2 )  S ) 2 # ADD,  NEXT,  END-CODE
 CODE 2-  ( n -- n-2 )  S ) 2 # SUB,  NEXT,  END-CODE
 CODE 2*  ( x -- x*2 )  S ) ASL,  NEXT,  END-CODE  \ CORE
 CODE 2/  ( x -- x/2 )  S ) ASR,  NEXT,  END-CODE  \ CORE
+\ a count of 16 or more shifts every bit out (as gforth): 0 at once, not a
+\ loop of up to 65535 steps for -1 LSHIFT
 CODE LSHIFT  ( x u -- x' )  \ CORE
-  R0 S )+ MOV,  NE IF,  BEGIN,  S ) ASL,  R0 DEC,  EQ UNTIL,  THEN,  NEXT,  END-CODE
+  R0 S )+ MOV,  16 # R0 CMP,  HIS IF,  S ) CLR,  NEXT,  THEN,
+  R0 TST,  NE IF,  BEGIN,  S ) ASL,  R0 DEC,  EQ UNTIL,  THEN,  NEXT,  END-CODE
 CODE RSHIFT  ( x u -- x' )  \ CORE
-  R0 S )+ MOV,  NE IF,  BEGIN,  CLC,  S ) ROR,  R0 DEC,  EQ UNTIL,  THEN,  NEXT,  END-CODE
+  R0 S )+ MOV,  16 # R0 CMP,  HIS IF,  S ) CLR,  NEXT,  THEN,
+  R0 TST,  NE IF,  BEGIN,  CLC,  S ) ROR,  R0 DEC,  EQ UNTIL,  THEN,  NEXT,  END-CODE
 CODE =  ( a b -- f )  EQ BINCMP,  END-CODE  \ CORE
 CODE <>  ( a b -- f )  NE BINCMP,  END-CODE  \ CORE EXT
 CODE <  ( a b -- f )  LT BINCMP,  END-CODE  \ CORE
