@@ -12,6 +12,7 @@ VARIABLE 'ON-ERROR  ( -- a ) \ xt run after every error (0 = none)
 \ outside it would. While it runs the dictionary ends below it (DICT-END), so
 \ ALLOT cannot reach it; afterwards the space is free again.
 1024 CONSTANT TEMP-ROOM  ( -- n ) \ the temporary definition and PAD's room above HERE
+\ (with less free space, 224 bytes above HERE: PAD's 160 and 64 for , and ALLOT)
 VARIABLE TEMP-DEPTH  ( -- a ) \ depth+1 when it started, 0 = none
 VARIABLE TEMP-START  ( -- a ) \ where its code starts
 VARIABLE TEMP-HERE  ( -- a ) \ HERE before it, put back when it runs
@@ -20,8 +21,8 @@ VARIABLE TEMP-HEAP  ( -- a ) \ HEAP then: a heap the run created keeps DICT-END
 : OPENER?  ( xt -- xt f )
   DUP ['] IF = OVER ['] BEGIN = OR OVER ['] DO = OR OVER ['] ?DO = OR ;
 : TEMP-BEGIN  ( xt -- xt )  \ xt is still on the stack: DEPTH counts it (the +1)
-  HERE TEMP-HERE !  DICT-END @ TEMP-ROOM - -2 AND
-  DUP HERE 160 + U< IF -8 THROW THEN  DUP TEMP-START ! DP !
+  HERE TEMP-HERE !  DICT-END @ TEMP-ROOM -  HERE 224 + UMAX  -2 AND  \ less room:
+  DUP 200 + DICT-END @ U> IF -8 THROW THEN  DUP TEMP-START ! DP !  \ what there is
   'DOCOL JSR-IP CF,  DEPTH TEMP-DEPTH !  ] ;
 : TEMP-FORGET  ( -- )  \ after an error in a run: the dictionary's end back
   TEMP-END @ IF HEAP @ TEMP-HEAP @ = IF TEMP-END @ DICT-END ! THEN 0 TEMP-END ! THEN ;
