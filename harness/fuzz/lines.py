@@ -35,10 +35,15 @@ BODY_ONLY = ["I", "J", "LEAVE", "EXIT", "UNLOOP EXIT", "RECURSE", "IF", "ELSE", 
 OPEN_DO = ["2 0 DO", "3 0 DO", "4 1 ?DO", "1 1 ?DO"]
 CATCHABLE = ["DUP", "DROP", "NOSUCH", ".", "THROW", "ABORT", "DEPTH", "2DROP"]
 EMPTIES_STACK = "EMPTY-THE-STACK"     # never defined: its error empties the stacks
-RETURN_STACK = ["5 >R R> .", "1 2 2>R 2R> + .", "7 >R R@ . R> DROP", "I >R", "1 >R",
+# the return stack misused inside a definition that runs at once: each leaves
+# EXIT a small number, its own caller's return or a loop running away; an EXIT
+# to an arbitrary stack value (a bare >R) can land inside the kernel, which the
+# kernel does not claim to catch (forth/README.md, What protects you): typed only
+RETURN_STACK = ["5 >R R> .", "1 2 2>R 2R> + .", "7 >R R@ . R> DROP", "1 >R", "40 >R",
                 "R>", "R> DROP", "2R>", "R@ .", "1 2 2>R", "3 0 DO I >R LOOP",
                 "3 0 DO R> DROP LOOP", "2 0 DO I >R R> . LOOP", "4 0 DO 1 >R LOOP",
-                "2 0 DO 1 2 2>R 2R> 2DROP LOOP", ">R", "0 >R EXIT"]
+                "2 0 DO 1 2 2>R 2R> 2DROP LOOP", "0 >R EXIT", "-1 >R", "3 >R 2 >R"]
+RETURN_STACK_TYPED = [">R", "I >R", "R>", "2>R", "R@", "2R>", "1 >R R>"]
 LAYS_DOWN = ["3 0 DO I , LOOP", "2 0 DO 4 ALLOT LOOP", "1 IF 7 , THEN", "4 0 DO I C, LOOP ALIGN",
              "0 IF 9 , ELSE 8 , THEN", "BEGIN 5 , 1 UNTIL", "2 0 DO HERE , 2 ALLOT LOOP", "-4 ALLOT"]
 REFILLS = ["REFILL DROP", "REFILL . SOURCE TYPE", "1 2 REFILL DROP .S",
@@ -135,7 +140,7 @@ class LineMaker:
             self.defined += 1
             return f": {name} {r.choice(RETURN_STACK)} ; {name}"
         if kind < 0.60:
-            return r.choice(RETURN_STACK)
+            return r.choice(RETURN_STACK + RETURN_STACK_TYPED)
         if kind < 0.85:
             self.names += 1
             return f"CREATE N{self.names} {r.choice(LAYS_DOWN)} N{self.names} @ ."

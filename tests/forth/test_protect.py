@@ -3,13 +3,11 @@ of the issue's numbered defects, typed as a FORTH student would: it ends in a
 FORTH error naming the word, back at the prompt, with the dictionary, the heap
 and the UPDATEd blocks intact (and on the disk after FLUSH), or, for the
 language defects, in gforth's answer."""
-import shutil
-
 import pytest
 
-from harness.machine.machine import ROOT, Machine
+from harness.machine.build import fresh_disk
+from harness.machine.machine import Machine
 
-ROBOT_DISK = ROOT / "build" / "robot.dsk"
 BLOCK = 1024
 
 
@@ -22,7 +20,7 @@ def block_on_disk(image, n):
 @pytest.fixture
 def robot_disk(tmp_path):
     """A copy of the robot's disk: blocks 1000-1012 as printed in the paper."""
-    return shutil.copy(ROBOT_DISK, tmp_path / "robot.dsk")
+    return fresh_disk(tmp_path)
 
 
 def with_work_at_risk(m):
