@@ -13,12 +13,13 @@ LABEL DOCON  ( -- x )  S -) W ) MOV,  RP )+ TST,  NEXT,  END-CODE
 LABEL DODOES  ( -- a )  S -) W MOV,  RP ) RP )+ MOV,  NEXT,  END-CODE
 
 \ EXIT checks where it returns to: a thread lies in the kernel or the dictionary
-\ space and is even, so a cell a program left with >R (a loop index, a count)
-\ is error -257 instead of a run through data (6 instructions more per EXIT)
+\ space, so a cell a program left with >R (a loop index, a count, a negative
+\ number) is error -257 instead of a run through data: one unsigned comparison
+\ of IP - ORIGIN, 4 instructions more per EXIT (an odd IP inside that range
+\ reads the cells from the even address below, as the 11/23 does)
 CODE EXIT  ( -- ) ( R: ip -- )  \ CORE
-  IP RP )+ MOV,  ORIGIN # IP CMP,  LO IF,  -257 THROW,  THEN,
-  LIMIT # IP CMP,  HIS IF,  -257 THROW,  THEN,  IP 1 # BIT,  NE IF,  -257 THROW,  THEN,
-  NEXT,  END-CODE  COMPILE-ONLY
+  IP RP )+ MOV,  R0 IP MOV,  R0 ORIGIN # SUB,  LIMIT ORIGIN - # R0 CMP,
+  HIS IF,  -257 THROW,  THEN,  NEXT,  END-CODE  COMPILE-ONLY
 CODE (LIT)  ( -- x )  S -) IP )+ MOV,  NEXT,  END-CODE
 CODE BRANCH  ( -- )  BRANCH,  END-CODE
 CODE ?BRANCH  ( f -- )  S )+ TST,  EQ IF,  BRANCH,  THEN,  IP )+ TST,  NEXT,  END-CODE
