@@ -143,8 +143,9 @@ CREATE ERROR-TEXTS  ( -- a )
   'ON-ERROR @ ?DUP IF EXECUTE THEN  0 PRIORITY! ;
 
 \ ---- QUIT --------------------------------------------------------------------------
-: .LOST  ( -- )  \ say so when the console ring overflowed
-  RXLOST @ ?DUP IF CR U. ." characters lost: typed too far ahead" CR  0 RXLOST ! THEN ;
+: .LOST  ( -- )  \ say so when the console ring overflowed, or ^C emptied it
+  RXLOST @ ?DUP IF CR U. ." characters lost: typed too far ahead" CR  0 RXLOST ! THEN
+  RXDROP @ ?DUP IF U. ." typed-ahead characters dropped by ^C" CR  0 RXDROP ! THEN ;
 : QUERY  ( -- )  \ CORE EXT: a line from the terminal becomes the source
   0 0 WHAT 2!  TIB TIB-SIZE 1- ACCEPT  TIB SWAP SRC 2!  0 >IN !  0 BLK !  0 SRC-ID !  SPACE .LOST ;
 : INTERPRET-LINE  ( -- )  QUERY INTERPRET ;
@@ -157,7 +158,7 @@ CODE RS-EMPTY  ( -- )  RP RP0 # MOV,  S -) CLR,  -6 THROW,  END-CODE
 CREATE RS-GUARD  ( -- a )  ' RS-EMPTY ,
 : ABORT-TO-QUIT  ( code -- )  \ THROW with no CATCH frame, return stack emptied:
   >R CLEAR-STACK  BASE @ 2 37 WITHIN 0= IF DECIMAL THEN  \ a sane stack and BASE
-  R> .ERROR  RESET-AFTER-ERROR  QUIT ;                   \ for the report
+  R> .ERROR  .LOST  RESET-AFTER-ERROR  QUIT ;            \ for the report
 : QUIT  ( -- )  \ CORE: read, interpret: forever. An error is a THROW with no CATCH
   RS-GUARD RP0 !  RP0 RP!  0 HANDLER !  POSTPONE [  0 BLK !  0 PRIORITY!  \ frame:
   BEGIN INTERPRET-LINE .PROMPT AGAIN ;         \ it reports, resets, QUITs again
