@@ -265,7 +265,7 @@ def make_app(lab, token, port_of):
 
     async def socket(request):
         check(request, websocket=True)
-        ws = web.WebSocketResponse(heartbeat=20, max_msg_size=protocol.MAX_MESSAGE * 4)
+        ws = web.WebSocketResponse(heartbeat=20)   # aiohttp's 4 MB at most; protocol.py less
         await ws.prepare(request)
         lab.opened += 1
         lab.pages[ws] = f"page {lab.opened}"
