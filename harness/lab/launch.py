@@ -17,7 +17,7 @@ class LabProcess:
     """`python -m harness lab` on a copy of the pristine disk, on a free port."""
 
     def __init__(self, tmp, speed="full"):
-        disk = Path(tmp) / "robot.dsk"
+        self.disk = disk = Path(tmp) / "robot.dsk"
         shutil.copyfile(ROOT / "build" / "robot.dsk", disk)
         self.log = Path(tmp) / "lab.log"
         with open(self.log, "w") as log:
