@@ -64,6 +64,18 @@ function sendKeys() {
 lab.type = (d) => {                 // what the terminal gives, and tests
   if (!lab.keyboard.you && lab.keyboard.holder !== null) return;   // watching
   if (lab.keyboard.holder === null) lab.keyboard.you = true;       // the first to type takes it
+  // ^C and ^E act at once: they go ahead of a paste not yet sent; ^C drops it
+  const urgent = d.search(/[\x03\x05]/);
+  if (urgent >= 0) {
+    lab.outbox += d.slice(0, urgent);
+    if (d[urgent] === "\x03" && lab.outbox) {
+      term.write(`\r\n[lab] ^C: ${lab.outbox.length} characters not yet sent by this page were dropped\r\n`);
+      lab.outbox = "";
+    }
+    send({ t: "key", d: d[urgent] });
+    lab.type(d.slice(urgent + 1));
+    return;
+  }
   lab.outbox += d;
   sendKeys();
 };
