@@ -131,11 +131,14 @@ class Simulator:
         def read_console(data):
             try:
                 self.watcher.output(data)         # is SIMH's sim> up? the BYE word's halt?
+                self.feed.output(data)            # booted yet?
+                self.feed.held(self.watcher)      # the queue follows sim> coming and going
             except Leave as way:
                 console(shown(data))
                 loop.create_task(self.close(way.how))
                 return
             console(shown(data))
+            self.keys_waiting.set()               # what waited for the boot may go
         self._watch(loop, "pty", read_console)
 
     def _watch(self, loop, name, handle):

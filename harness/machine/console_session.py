@@ -234,7 +234,7 @@ def _raw(fd):
     if not os.isatty(fd):
         return None
     saved = termios.tcgetattr(fd)
-    tty.setraw(fd)
+    tty.setraw(fd, termios.TCSANOW)           # what was typed before is kept
     return saved
 
 
@@ -264,6 +264,7 @@ def _converse(child, feed, watcher, halts):
                     data = b""
                 if not data:
                     return
+                feed.output(data)
                 _show(fd_out, shown(halts.feed(watcher.output(data))))
             if fd_in in ready:
                 data = os.read(fd_in, 1 << 16)

@@ -83,6 +83,8 @@ class KeyFeed:
         self.was_simh = False
         self.resume_at = 0.0
         self.abandoned = 0            # characters after a way out, never typed
+        self.booted = False           # SIMH empties the pty as it starts the machine (GO):
+        self._tail = b""              # keys wait for the FORTH's first prompt
         try:
             self.slave = os.readlink(f"/proc/{pid}/fd/0")
         except OSError:
@@ -181,8 +183,18 @@ class KeyFeed:
         self.stopping = time.monotonic() + STOP_KEY_WAIT_S
 
     # ---- into the pty ---------------------------------------------------------------
+    def output(self, data):
+        """Follow the machine's output: until the FORTH's first ` ok` the machine
+        has not started, and what was typed waits."""
+        if not self.booted:
+            self._tail = (self._tail + data)[-8:]
+            self.booted = b" ok\r\n" in self._tail
+
     def held(self, watcher):
-        """Whether the queue must wait (sim> is up, or coming, or just left)."""
+        """Whether the queue must wait (not booted yet; sim> is up, or coming, or
+        just left)."""
+        if not self.booted:
+            return True
         now = time.monotonic()
         if watcher.at_simh:
             self.stopping, self.was_simh = None, True
@@ -198,7 +210,7 @@ class KeyFeed:
     def pump(self, watcher):
         """Write what the window allows; the number of bytes written. A way out
         among them raises Leave (the rest of the queue is abandoned)."""
-        if not self.queue or self.held(watcher):
+        if self.held(watcher) or not self.queue:     # held() follows sim> every time
             return 0
         room = WINDOW - self.in_pty()
         if room <= 0:

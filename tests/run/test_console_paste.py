@@ -3,12 +3,13 @@
 character pastes, at both paces and into the lab page too, are make fuzz's
 (harness/bench/paste_runs.py)."""
 import shutil
+import sys
 
 import pexpect
 
 from harness.bench.paste_runs import console, console_paste
 from harness.bench.paste_text import check_line, definitions, expected
-from tests.run.common import PRISTINE, needs_build
+from tests.run.common import PRISTINE, ROOT, needs_build
 
 pytestmark = needs_build
 
@@ -53,5 +54,20 @@ def test_ctrl_e_during_a_paste_stops_at_sim_and_cont_finishes_it_whole(tmp_path)
     child.send("cont\r")
     child.expect(f"{expected(n)}  ok\r\n", timeout=60)
     assert "Error" not in child.before
+    child.send("BYE\r")
+    child.expect(pexpect.EOF, timeout=60)
+
+
+def test_keys_typed_while_the_machine_boots_wait_for_its_prompt(tmp_path):
+    """SIMH empties the pty as it starts the machine (GO): a line typed before the
+    FORTH's first prompt waits in the harness instead of being lost."""
+    disk = tmp_path / "boot.dsk"
+    shutil.copyfile(PRISTINE, disk)
+    child = pexpect.spawn(sys.executable, ["-m", "harness", "console", "--fast", "--disk",
+                                           str(disk)], cwd=str(ROOT), timeout=30,
+                          encoding="latin-1")
+    child.send("2 3 + .\r")
+    child.expect(r"blocks 0-\d+\.\r\n ok\r\n")
+    child.expect(r"2 3 \+ \. 5  ok\r\n")
     child.send("BYE\r")
     child.expect(pexpect.EOF, timeout=60)
