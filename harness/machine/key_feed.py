@@ -139,6 +139,7 @@ class KeyFeed:
             self._put(data[start:i], watcher)
             start = i + 1
             if byte == CTRL_C:
+                watcher.line.clear()              # the FORTH drops the line too
                 dropped = self.interrupt()
                 if dropped:
                     notes.append(f"^C: {dropped} characters typed or pasted and not yet "
