@@ -13,6 +13,7 @@ class Page:
     def __init__(self, session, ws):
         self.session, self.ws = session, ws
         self.screen, self.messages = "", []
+        self.count = {}                                      # messages received, per kind
         self.inbox = asyncio.Queue()
         self.reader = asyncio.ensure_future(self._read())   # answers the server's pings
 
@@ -52,6 +53,7 @@ class Page:
             message = json.loads(msg.data)
             protocol.check(message, protocol.TO_PAGE)       # the server speaks the protocol
             self.messages.append(message)
+            self.count[message["t"]] = self.count.get(message["t"], 0) + 1
             if message["t"] == "con":
                 self.screen += message["d"]
             if message["t"] == "hello":
