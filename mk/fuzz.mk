@@ -1,11 +1,10 @@
-# mk/fuzz.mk: the long checks of bad and large input.
-#   make fuzz                 the console fuzz of issue 8 (harness/bench/fuzz.py):
-#                             10 000 seeded random lines, then a robot move; prints
-#                             halts, hangs and reboots (all must be 0); then issue
-#                             23's: pastes of 5 000 and 30 000 characters into the
-#                             console (both paces) and the lab page
-#                             (harness/bench/paste_runs.py), and 50 000 malformed
-#                             lab messages (harness/bench/protocol_fuzz.py)
+# mk/fuzz.mk: the long checks of bad and large input (harness/fuzz/).
+#   make fuzz                 the console fuzz of issue 8 (console_fuzz.py): 10 000
+#                             seeded random lines, then a robot move; prints halts,
+#                             hangs and reboots (all must be 0); then issue 23's:
+#                             pastes of 5 000 and 30 000 characters into the
+#                             console (both paces) and the lab page (paste_runs.py),
+#                             and 50 000 malformed lab messages (protocol_fuzz.py)
 #   make fuzz FUZZ_SEED=7 FUZZ_LINES=20000 FUZZ_MESSAGES=100000
 #   make bench-paste          a 20 000-character paste's wall time at both paces
 #                             (part of make bench)
@@ -19,12 +18,12 @@ PASTE_NEEDS := $(BUILD)/pdp11 $(BUILD)/kernel.lda $(BUILD)/kernel.map $(BUILD)/r
                lab-assets venv
 
 fuzz: $(PASTE_NEEDS)
-	@$(PY) -m harness.bench.fuzz --lines $(FUZZ_LINES) --seed $(FUZZ_SEED)
-	@$(PY) -m harness.bench.paste_runs fuzz
-	@$(PY) -m harness.bench.protocol_fuzz --messages $(FUZZ_MESSAGES) --seed $(FUZZ_SEED)
+	@$(PY) -m harness.fuzz.console_fuzz --lines $(FUZZ_LINES) --seed $(FUZZ_SEED)
+	@$(PY) -m harness.fuzz.paste_runs fuzz
+	@$(PY) -m harness.fuzz.protocol_fuzz --messages $(FUZZ_MESSAGES) --seed $(FUZZ_SEED)
 
 bench-paste: $(PASTE_NEEDS)
-	@$(PY) -m harness.bench.paste_runs bench
+	@$(PY) -m harness.fuzz.paste_runs bench
 BENCHES += bench-paste
 
 .PHONY: fuzz bench-paste

@@ -4,11 +4,11 @@ and the FORTH's BYE word inside a line ends the lab as it ends make run."""
 import asyncio
 import random
 
-from harness.bench.paste_text import check_line, definitions, expected
-from harness.bench.protocol_fuzz import bad_message
+from harness.fuzz.paste_text import check_line, definitions, expected
+from harness.fuzz.protocol_fuzz import bad_message
 from harness.lab.page_client import Page
 
-FUZZ_MESSAGES = 2000          # make fuzz sends 50 000 (harness/bench/protocol_fuzz.py)
+FUZZ_MESSAGES = 2000          # make fuzz sends 50 000 (harness/fuzz/protocol_fuzz.py)
 
 
 def run(coroutine):

@@ -5,7 +5,7 @@ import re
 
 import pytest
 
-from harness.bench.protocol_fuzz import bad_message
+from harness.fuzz.protocol_fuzz import bad_message
 from harness.lab import protocol
 from harness.lab.server import Lab
 from harness.lab.server import STATIC

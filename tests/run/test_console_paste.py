@@ -1,14 +1,14 @@
 """Pastes into the console (issue 23): every definition arrives and no error, and
 ^C and ^E act at once while a paste is still waiting. The 5 000- and 30 000-
 character pastes, at both paces and into the lab page too, are make fuzz's
-(harness/bench/paste_runs.py)."""
+(harness/fuzz/paste_runs.py)."""
 import shutil
 import sys
 
 import pexpect
 
-from harness.bench.paste_runs import console, console_paste
-from harness.bench.paste_text import check_line, definitions, expected
+from harness.fuzz.paste_runs import console, console_paste
+from harness.fuzz.paste_text import check_line, definitions, expected
 from tests.run.common import PRISTINE, ROOT, needs_build
 
 pytestmark = needs_build
