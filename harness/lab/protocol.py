@@ -42,7 +42,8 @@ FROM_PAGE = {
 }
 
 TO_PAGE = {
-    "hello": {"stops": dict, "per_axis": list, "single": list, "status": dict, "con": str,
+    "hello": {"stops": dict, "plant": dict, "per_axis": list, "single": list, "status": dict,
+              "con": str,
               "keyboard": dict},
     "con": {"d": str},                                   # console output
     "data": {"rows": list, "status": dict, "servo": dict},
