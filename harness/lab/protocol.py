@@ -43,8 +43,7 @@ FROM_PAGE = {
 
 TO_PAGE = {
     "hello": {"stops": dict, "plant": dict, "per_axis": list, "single": list, "status": dict,
-              "con": str,
-              "keyboard": dict},
+              "con": str, "keyboard": dict},
     "con": {"d": str},                                   # console output
     "data": {"rows": list, "status": dict, "servo": dict},
     "keyboard": {"holder": Rule(str, nullable=True), "you": bool},

@@ -16,10 +16,11 @@ output (else the simulator would stop on a full pty and never drain its input).
 ^C (not at sim>) drops what is still waiting here and in the pty, says how much,
 and has the terminal side put ^C into the DL11 at once (SIGUSR1): the FORTH then
 drops its ring and says how much. ^E: what the pty still holds is taken back
-into the queue first (SIMH flushes the pty when it stops), then ^E goes in;
+(read out of it) into the queue first (SIMH flushes the pty when it stops), then
+^E goes in;
 the queue waits while SIMH's sim> is up and goes on after CONT. Keys typed at
 sim> go straight in. The simulator is stopped (SIGSTOP) for the instant the
-pty is counted and flushed, so no character is read meanwhile.
+pty is emptied, so no character is read meanwhile.
 
 The watcher (harness/machine/console_watch.py) sees each byte when it is
 written, so a way out inside a paste (BYE, ^D) counts where it stands.
@@ -35,7 +36,6 @@ import time
 from harness.machine.console_watch import Leave
 
 WINDOW = 256                 # characters the pty may hold: taken back at ^E, dropped at ^C
-RECENT = 4096                # the bytes last written, from which ^E takes back the pty's
 RESUME_AFTER_CONT_S = 0.3    # SIMH flushes the pty as the machine starts again (CONT)
 STOP_KEY_WAIT_S = 2.0        # at most this long waiting for sim> after ^E
 CTRL_C, CTRL_E, CTRL_U = 3, 5, 21
@@ -78,7 +78,6 @@ class KeyFeed:
         the queue takes (None: no bound; room() says what is left)."""
         self.fd, self.pid, self.limit = fd, pid, limit
         self.queue = bytearray()
-        self.recent = bytearray()
         self.stopping = None          # monotonic deadline while ^E waits for sim>
         self.was_simh = False
         self.resume_at = 0.0
@@ -106,20 +105,28 @@ class KeyFeed:
         finally:
             os.close(fd)
 
-    def _flush_pty(self):
-        """Empty the pty's input; how many characters it held."""
+    def _take_pty(self):
+        """What the simulator has not read from the pty, taken out of it (the
+        simulator frozen): the exact bytes. (A read also brings across what the
+        kernel had not yet moved to the reader's side, which FIONREAD misses.)"""
         if not self.slave:
-            return 0
-        n = self.in_pty()
+            return b""
+        taken = bytearray()
         try:
             fd = os.open(self.slave, os.O_RDONLY | os.O_NOCTTY | os.O_NONBLOCK)
-            try:
-                termios.tcflush(fd, termios.TCIFLUSH)
-            finally:
-                os.close(fd)
         except OSError:
-            return 0
-        return n
+            return b""
+        try:
+            while True:
+                data = os.read(fd, 1 << 16)
+                if not data:
+                    break
+                taken += data
+        except OSError:
+            pass                                  # EAGAIN: nothing more
+        finally:
+            os.close(fd)
+        return bytes(taken)
 
     def waiting(self):
         return len(self.queue) + self.in_pty()
@@ -160,7 +167,7 @@ class KeyFeed:
     def interrupt(self):
         """^C: drop what waits here and in the pty; ^C into the DL11 at once."""
         with frozen(self.pid):
-            dropped = len(self.queue) + self._flush_pty()
+            dropped = len(self.queue) + len(self._take_pty())
             self.queue.clear()
         with contextlib.suppress(ProcessLookupError):
             os.kill(self.pid, signal.SIGUSR1)
@@ -177,9 +184,7 @@ class KeyFeed:
     def stop_key(self, watcher):
         """^E: the pty's unread characters back into the queue, then ^E."""
         with frozen(self.pid):
-            n = self._flush_pty()
-            if n:
-                self.queue[:0] = self.recent[-n:]
+            self.queue[:0] = self._take_pty()
             self._write(bytes([CTRL_E]), watcher)
         self.stopping = time.monotonic() + STOP_KEY_WAIT_S
 
@@ -237,6 +242,4 @@ class KeyFeed:
                 continue
             except OSError:
                 return                          # the simulator has gone: its end is read
-            self.recent += view[:n]
             view = view[n:]
-        del self.recent[:-RECENT]

@@ -4,6 +4,7 @@ import os
 import signal
 import subprocess
 import sys
+import time
 import tty
 
 import pytest
@@ -20,12 +21,25 @@ def feed():
     reader = subprocess.Popen([sys.executable, "-c", "import signal, time; signal.signal("
                                "signal.SIGUSR1, signal.SIG_IGN); time.sleep(60)"],
                               stdin=slave)
+    name = os.ttyname(slave)
     os.close(slave)
+    deadline = time.monotonic() + 10                     # its stdin is the pty once it runs
+    while os.readlink(f"/proc/{reader.pid}/fd/0") != name and time.monotonic() < deadline:
+        time.sleep(0.01)
     keys = KeyFeed(master, reader.pid, limit=10000)
     yield keys
     reader.send_signal(signal.SIGKILL)
     reader.wait()
     os.close(master)
+
+
+def in_pty_soon(feed, n):
+    """The kernel moves a pty's input to the reader's side a moment after the
+    write: FIONREAD gets there soon."""
+    deadline = time.monotonic() + 5
+    while feed.in_pty() != n and time.monotonic() < deadline:
+        time.sleep(0.005)
+    return feed.in_pty() == n
 
 
 def test_keys_wait_for_the_boot_then_go_a_window_at_a_time(feed):
@@ -35,7 +49,7 @@ def test_keys_wait_for_the_boot_then_go_a_window_at_a_time(feed):
     assert feed.pump(watcher) == 0 and feed.waiting() == len(text)   # not booted
     feed.output(b"blocks 0-10239.\r\n ok\r\n")
     assert feed.pump(watcher) == WINDOW
-    assert feed.in_pty() == WINDOW and feed.waiting() == len(text)
+    assert in_pty_soon(feed, WINDOW) and feed.waiting() == len(text)
     assert feed.pump(watcher) == 0                       # the window is full: no blocking
     assert feed.room() == 10000 - (len(text) - WINDOW)
 
@@ -59,7 +73,7 @@ def test_ctrl_e_takes_the_pty_back_and_sends_only_itself(feed):
     feed.pump(watcher)
     feed.typed(b"\x05", watcher)
     assert bytes(feed.queue) == text                     # whole, in order, nothing doubled
-    assert feed.in_pty() == 1                            # only ^E is in the pty
+    assert in_pty_soon(feed, 1)                          # only ^E is in the pty
     assert feed.pump(watcher) == 0                       # held until sim> comes and goes
 
 
