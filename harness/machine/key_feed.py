@@ -17,9 +17,8 @@ output (else the simulator would stop on a full pty and never drain its input).
 and has the terminal side put ^C into the DL11 at once (SIGUSR1): the FORTH then
 drops its ring and says how much. ^E: what the pty still holds is taken back
 (read out of it) into the queue first (SIMH flushes the pty when it stops), then
-^E goes in;
-the queue waits while SIMH's sim> is up and goes on after CONT. Keys typed at
-sim> go straight in. The simulator is stopped (SIGSTOP) for the instant the
+^E goes in; the queue waits while SIMH's sim> is up and goes on after CONT. Keys
+typed at sim> go straight in. The simulator is stopped (SIGSTOP) for the instant the
 pty is emptied, so no character is read meanwhile.
 
 The watcher (harness/machine/console_watch.py) sees each byte when it is
