@@ -53,8 +53,12 @@ void io_page_examine_install (void);
 void console_pacing_install (void);
 void console_pacing_rate_changed (int32 old_rate);
 
-/* RL02 write-through (rl_durable.c). */
+/* RL02 write-through (rl_durable.c), one writer per image (rl_one_writer.c). */
 void rl_durable_install (void);
+void rl_one_writer_install (void);
+
+/* QUIT, EXIT and BYE at sim> FLUSH the FORTH's blocks first (leave_check.c). */
+void leave_check_install (void);
 
 /* The lab bench's device (lab.c): its part of a rate change. */
 void lab_rate_changed (int32 old_rate);

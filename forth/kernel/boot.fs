@@ -36,3 +36,12 @@ LABEL ENTRY
   R0 ' DP >BODY @# MOV,  BEGIN,  R0 )+ 10O # MOV,  LIMIT # R0 CMP,  HIS UNTIL,
   0 # MTPS,
   IP HERE 6 + # MOV,  NEXT,  ' COLD ,  END-CODE
+
+\ The simulator's QUIT, EXIT and BYE at sim> start the machine here when blocks
+\ are UPDATEd (pdp11-devices/leave_check.c), whatever it was doing: fresh stacks,
+\ FLUSH (a failed write is reported by the driver and its block stays UPDATEd;
+\ the simulator reads BUF-UPD afterwards), then (BYE)'s HALT, where it stops.
+: (LEAVE)  ( -- )  ['] FLUSH CATCH DROP  (BYE) ;
+LABEL LEAVE-ENTRY
+  340O # MTPS,  RP RP0 # MOV,  S S0 # MOV,  0 # MTPS,
+  IP HERE 6 + # MOV,  NEXT,  ' (LEAVE) ,  END-CODE

@@ -4,8 +4,10 @@ The machine boots as in `make run`, with the LAB device (pdp11-devices/lab.c)
 attached to a FIFO in a private temporary directory; a second FIFO carries the
 lab's commands (speed, pause, step, watch, dump) to the device. Everything is
 read on the asyncio loop, so the simulator never waits long for a reader.
-Leaving (BYE, ^D, ^C or QUIT at sim>, or close()) is the console's: FLUSH, check,
-detach, quit (harness/machine/console_session.py).
+Leaving (BYE, ^D, ^C at sim>, the FORTH's BYE word, or close()) is the console's:
+FLUSH, check, detach, quit (harness/machine/console_session.py). SIMH's QUIT,
+EXIT or BYE typed at the page's sim> FLUSH inside the simulator
+(pdp11-devices/leave_check.c); the lab then reports from its exit status.
 """
 import asyncio
 import os
@@ -18,7 +20,8 @@ import pexpect
 
 from harness.lab.feed import Lines, lab_row
 from harness.machine import simh
-from harness.machine.console_session import KERNEL, RACK_OFF, leave, say
+from harness.machine.console_session import (KERNEL, RACK_OFF, bye_halt, leave, say,
+                                             simh_exit_report)
 from harness.machine.console_watch import Leave, LineWatcher
 from harness.machine.simh import ROOT
 
@@ -39,23 +42,25 @@ def plant_stops(simulator):
     return end_stops(simh.run("show plant\n", simulator=simulator, timeout=30).encode())
 
 
-def boot_script(disk, lab_fifo, speed, kernel=KERNEL):
+def boot_script(disk, lab_fifo, speed, kernel=KERNEL, read_only=False):
     """The lab's machine: the LAB device on its FIFO, the rack off as in make run
     (the page has the switch)."""
     return simh.boot_script(disk, kernel, setup=f"attach lab {lab_fifo}\n"
-                            f"set lab speed={speed}\n{RACK_OFF}\n")
+                            f"set lab speed={speed}\n{RACK_OFF}\n", read_only=read_only)
 
 
 class Simulator:
     """One lab machine. Callbacks (called on the loop): console(bytes),
     lab(LabRow), ended(safe: bool, or None when the simulator exited by itself)."""
 
-    def __init__(self, simulator, disk, console, lab, ended, speed="real", page=None):
+    def __init__(self, simulator, disk, console, lab, ended, speed="real", page=None,
+                 read_only=False):
         self.callbacks = console, lab, ended
         self.page = page or console               # the leaving report: the page's copy
         self.simulator, self.disk, self.speed = simulator, disk, speed
+        self.read_only = read_only
         self.tmp = tempfile.TemporaryDirectory(prefix="lab-")
-        self.watcher = LineWatcher()
+        self.watcher = LineWatcher(bye_halt())    # the BYE word ends the lab too
         self.child = None
         self.fds = {}
         self.leaving = False
@@ -72,7 +77,8 @@ class Simulator:
         self.fds["lab"] = os.open(lab_fifo, os.O_RDONLY | os.O_NONBLOCK)
         self.ctl = os.open(tmp / "lab.ctl", os.O_RDWR | os.O_NONBLOCK)
         ini = tmp / "lab.ini"
-        ini.write_text(boot_script(self.disk, lab_fifo, SPEEDS[self.speed]))
+        ini.write_text(boot_script(self.disk, lab_fifo, SPEEDS[self.speed],
+                                   read_only=self.read_only))
         self.child = pexpect.spawn(str(self.simulator), [str(ini)], timeout=None,
                                    dimensions=(24, 80), cwd=str(ROOT))
         self.child.delaybeforesend = None
@@ -89,8 +95,11 @@ class Simulator:
         self.fds["pty"] = self.child.child_fd
 
         def read_console(data):
-            self.watcher.output(data)             # is SIMH's sim> up?
             console(data)
+            try:
+                self.watcher.output(data)         # is SIMH's sim> up? the BYE word?
+            except Leave as way:
+                loop.create_task(self.close(way.how))
         self._watch(loop, "pty", read_console)
 
     def _watch(self, loop, name, handle):
@@ -108,7 +117,7 @@ class Simulator:
                 if name == "pty" and not self.leaving:
                     self.leaving = True               # the simulator exited by itself
                     self._release()
-                    self.callbacks[2](None)
+                    self.callbacks[2](self._exited())
                 return
             handle(data)
         loop.add_reader(fd, readable)
@@ -122,7 +131,7 @@ class Simulator:
 
     # ---- from the page ------------------------------------------------------------
     def keys(self, data):
-        """What the user typed; a way out (BYE, ^D, ^C or QUIT at sim>:
+        """What the user typed; a way out (BYE, ^D, ^C at sim>:
         harness/machine/console_watch.py) starts leaving, as the console does."""
         if self.leaving:
             return
@@ -161,6 +170,19 @@ class Simulator:
         finally:
             self._release()
         self.callbacks[2](safe)
+
+    def _exited(self):
+        """The simulator ended by itself (SIMH's QUIT at the page's sim>, a refused
+        disk, a crash): the report, to the shell and the page; True when its exit
+        status says every UPDATEd block was written, None when nothing is known."""
+        code = self.child.exitstatus
+        lines, status = simh_exit_report(code, self.disk)
+        known = code in (0, simh.LEFT_WITHOUT_BLOCKS, simh.DISK_HELD)
+        if lines:
+            if known:                             # else the lab command says it
+                say(*lines)
+            self.page("".join(f"\r\n[lab] {line}" for line in lines).encode() + b"\r\n")
+        return status == 0 if known else None
 
     def _release(self):
         for name in list(self.fds):

@@ -47,6 +47,8 @@ SKIP_WAITS = "deposit cpu wait_enable 1"
 # SIMH reports every stop as "\n<reason>, PC: <octal> (<instruction>)\n" then prompts.
 STOP = re.compile(r"\r\n([^\r\n]*), PC: ([0-7]+) \(([^\r\n]*)\)\r\nsim> ")
 EXAMINED = re.compile(r"([0-7]+):\s+([0-7]+)")
+# pdp11-devices/rl_one_writer.c's refusal, after which the simulator exits
+DISK_HELD_LINE = re.compile(r"RL\d: [^\r\n]* is in use by [^\r\n]*")
 
 
 class ScriptError(RuntimeError):
@@ -147,6 +149,9 @@ class ScriptedMachine(contextlib.AbstractContextManager):
     # ---- SIMH round trips -------------------------------------------------------------
     def _expect_prompt(self, what):
         i = self.child.expect_exact([PROMPT, pexpect.EOF, pexpect.TIMEOUT])
+        held = DISK_HELD_LINE.search(self.child.before)
+        if i == 1 and held:                     # another simulator writes the disk
+            raise ScriptError(held.group(0))
         if i:
             raise ScriptError(f"the simulator {'exited' if i == 1 else 'did not answer'} "
                               f"during {what}: {self.child.before[-500:]!r}")
