@@ -1,5 +1,6 @@
 # mk/fuzz.mk: the console fuzz of issue 8 (harness/bench/fuzz.py).
-#   make fuzz                 10 000 seeded random lines, then a robot move;
+#   make fuzz                 10 000 seeded random lines, then a robot move, then
+#                             20 rounds of a second simulator on the same image;
 #                             prints halts, hangs and reboots (all must be 0)
 #   make fuzz FUZZ_SEED=7 FUZZ_LINES=20000
 # tests/forth/test_fuzz.py runs a short version (2 000 lines) in make test.

@@ -204,15 +204,6 @@ def _detach(child, unit):
     return found.group(1) if found else "ok"
 
 
-def _quit(child, gone):
-    """QUIT. The simulator refuses it while blocks stay UPDATEd (leave_check.c);
-    the report already names them, so the console then leaves anyway (QUIT -F)."""
-    child.send(b"quit\r")
-    if child.expect([pexpect.EOF, simh.LEAVE_REFUSED], timeout=15) == 1:
-        child.send(b"quit -f\r")
-        child.expect(pexpect.EOF, timeout=15)
-
-
 def leave(child, disk, trace, kernel=KERNEL, busy_wait=BUSY_WAIT, devices=(), echo=None):
     """Flush the FORTH's blocks, check, detach (the trace, then `devices`, then
     the disk), quit; the Departure. What the FORTH prints meanwhile goes to
@@ -232,7 +223,7 @@ def leave(child, disk, trace, kernel=KERNEL, busy_wait=BUSY_WAIT, devices=(), ec
         for unit in (("plant",) if trace else ()) + tuple(devices):
             _detach(child, unit)
         gone.detach = _detach(child, "rl0")
-        _quit(child, gone)
+        pty_child.quit_simh(child)       # the report names the blocks a refusal would
     except (pexpect.TIMEOUT, pexpect.EOF) as err:
         gone.notes.append(f"the simulator stopped answering while leaving "
                           f"({type(err).__name__})")

@@ -109,10 +109,11 @@ FORTH_ERROR = re.compile(r"\r\nError: ([^\r\n]*)")
 class ScriptedMachine(contextlib.AbstractContextManager):
     def __init__(self, disk, trace=None, simulator=PDP11, kernel=KERNEL,
                  kernel_map=KERNEL_MAP, line_limit=60.0, wall_timeout=300, cwd=ROOT,
-                 settings=()):
+                 settings=(), read_only=False):
         """`disk` and `trace` are attached as given, relative to `cwd`: SIMH
-        prints them in SHOW, so a scripted run passes bare names. `settings`
-        are SIMH commands run before the trace is attached (SET PLANT ...)."""
+        prints them in SHOW, so a scripted run passes bare names; `read_only`
+        attaches the disk so (ATTACH -R). `settings` are SIMH commands run
+        before the trace is attached (SET PLANT ...)."""
         for what, path in (("simulator", simulator), ("kernel", kernel),
                            ("disk", Path(cwd) / disk)):
             if not Path(path).is_file():
@@ -125,7 +126,7 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         ini = Path(self._tmp.name) / "boot.ini"
         ini.write_text(f"do {MACHINE_INI}\n"
                        f"{SKIP_WAITS}\n"
-                       f"attach rl0 {disk}\n"
+                       f"attach {'-r ' if read_only else ''}rl0 {disk}\n"
                        + "".join(f"{c}\n" for c in settings)
                        + (f"attach plant {trace}\n" if trace else "")
                        + f"load {Path(kernel).resolve()}\n"
@@ -282,13 +283,13 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         return answer
 
     def close(self):
-        """Detach the trace and the disk (SIMH flushes them) and quit."""
-        commands = (["detach plant"] if self.trace else []) + ["detach rl0"]
+        """Detach the trace (its rows end here) and quit: SIMH's QUIT writes the
+        FORTH's UPDATEd blocks first (pdp11-devices/leave_check.c), or, when it
+        cannot, leaves without them (QUIT -F), and detaches the disk."""
         try:
-            for command in commands if self.child.isalive() else ():
-                self.simh(command)
-            self.child.send("quit\r")
-            self.child.expect(pexpect.EOF, timeout=10)
+            if self.trace and self.child.isalive():
+                self.simh("detach plant")
+            pty_child.quit_simh(self.child, timeout=10)
         except (ScriptError, pexpect.TIMEOUT, pexpect.EOF, OSError):
             pass            # a simulator already gone or stuck: killed below
         pty_child.close(self.child)

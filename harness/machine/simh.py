@@ -47,11 +47,9 @@ _EXAMINED = re.compile(r"^([A-Za-z0-9_]+):\t([0-9]+)\s*$", re.M)
 
 # The simulator's exit status when the startup script's disk is written by another
 # simulator (pdp11-devices/rl_one_writer.c), and after QUIT -F left UPDATEd blocks
-# unwritten (pdp11-devices/leave_check.c); the line SIMH prints when it refuses
-# QUIT, EXIT or BYE because blocks could not be written.
+# unwritten (pdp11-devices/leave_check.c).
 DISK_HELD = 3
 LEFT_WITHOUT_BLOCKS = 1
-LEAVE_REFUSED = re.compile(rb"(?:QUIT|EXIT|BYE) refused: [^\r\n]*")
 
 
 def boot_script(disk, kernel=KERNEL, setup="", read_only=False):

@@ -104,7 +104,7 @@ def test_every_simh_way_out_writes_the_updated_block_first(tmp_path, way):
     child.expect("sim> ")
     child.send(SIMH_WAYS_OUT[way].format(do_file=do_file))
     child.expect(rf"(QUIT|EXIT|BYE): the FORTH's UPDATEd block\(s\) {BLOCK} were written "
-                 "to .* first")
+                 r"to [^\r\n]* first")
     child.expect_exact("[console] The simulator was left at sim> (QUIT, EXIT or BYE): it "
                        "FLUSHed")
     child.expect(pexpect.EOF)
