@@ -26,7 +26,7 @@ $(BUILD)/robot.ini: mk/forth.mk pdp11-devices/machine.ini
 	  "; build/pdp11 build/robot.ini -r attaches the disk read-only (ATTACH -R)" \
 	  "do pdp11-devices/machine.ini" \
 	  "; while the FORTH waits for a key, simulated time follows the wall clock" \
-	  "; (the KW11-L sleeps at its ticks, pdp11-devices/kw11l.c); busy, full speed" \
+	  "; (the KW11-L sleeps at its ticks, pdp11-devices/bus/kw11l.c); busy, full speed" \
 	  "set cpu idle" \
 	  "attach %1 rl0 $(ROBOT_DISK)" \
 	  "load $(BUILD)/kernel.lda" "go" > $@

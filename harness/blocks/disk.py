@@ -148,7 +148,7 @@ def check_image(path, writable=True):
 
 def writer_of(path):
     """Who writes the image: a simulator holds an exclusive flock(2) on it while an RL
-    unit has it attached read-write (pdp11-devices/rl_one_writer.c). The text of
+    unit has it attached read-write (pdp11-devices/simh/rl_one_writer.c). The text of
     PATH.lock ("pid N since DATE UTC") when one does, else None."""
     try:
         fd = os.open(path, os.O_RDONLY)

@@ -6,11 +6,9 @@ from pathlib import Path
 from harness.blocks.disk import DiskError, check_image, check_not_held
 from harness.commands.argtypes import positive
 from harness.machine.console_session import BUSY_WAIT, HINT, RACK_HINT, session
-from harness.machine.simh import PDP11
+from harness.machine.build import (PDP11, PDP11_TIMED, PRISTINE_DISK as PRISTINE,
+                                    WORKING_DISK as WORK_DISK)
 
-ROOT = Path(__file__).resolve().parents[2]
-WORK_DISK = ROOT / "local" / "robot.dsk"
-PRISTINE = ROOT / "build" / "robot.dsk"
 
 
 class ConsoleError(RuntimeError):
@@ -46,7 +44,10 @@ def configure(parser):
     parser.add_argument("--trace", metavar="FILE", help="record the plant trace (CSV)")
     parser.add_argument("--read-only", action="store_true",
                         help="attach the disk read-only (beside a simulator writing it)")
-    parser.add_argument("--simulator", default=str(PDP11), help=argparse.SUPPRESS)
+    parser.add_argument("--timed", action="store_true",
+                        help="11/23 time: each instruction takes its KDF11-A time (SET CLK "
+                        "TIMED, on build/pdp11-timed) instead of 1/300000 s")
+    parser.add_argument("--simulator", help=argparse.SUPPRESS)
     # wall seconds a running word gets at BYE before ^C stops it (tests shorten it)
     parser.add_argument("--busy-wait", type=positive, default=BUSY_WAIT,
                         help=argparse.SUPPRESS)
@@ -81,9 +82,10 @@ def _check(disk, read_only):
 
 def run(args):
     disk = working_disk(args.disk, args.read_only)
+    args.simulator = args.simulator or str(PDP11_TIMED if args.timed else PDP11)
     if not Path(args.simulator).is_file():
         raise ConsoleError(f"{args.simulator}: no simulator (run make)")
     if args.trace and not Path(args.trace).resolve().parent.is_dir():
         raise ConsoleError(f"{args.trace}: its directory does not exist")
-    return session(args.simulator, disk, trace=args.trace, fast=args.fast,
+    return session(args.simulator, disk, trace=args.trace, fast=args.fast, timed=args.timed,
                    busy_wait=args.busy_wait, read_only=args.read_only)

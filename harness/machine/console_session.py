@@ -5,7 +5,7 @@ the harness watches the keystrokes only to catch the ways out
 (harness/machine/console_watch.py): BYE, ^D, the halt of the FORTH's BYE word, and at sim>
 ^C, which would otherwise end the simulator with the FORTH's UPDATEd blocks unwritten.
 (SIMH's QUIT, EXIT and BYE at sim> FLUSH the blocks inside the simulator,
-pdp11-devices/leave_check.c; the console then reports from its exit status:
+pdp11-devices/simh/leave_check.c; the console then reports from its exit status:
 simh_exit_report.) Then it erases the typed line (^U, which both the FORTH and SIMH's prompt take as
 "kill line"), brings the FORTH back to its prompt if SIMH had it stopped, has it
 FLUSH its block buffers, checks at sim> that no UPDATEd block is left (listing the
@@ -24,17 +24,17 @@ import pexpect
 
 from harness.blocks.disk import block_ranges
 from harness.machine import block_buffers, pty_child
-from harness.machine.console_halt import HaltWatcher, kernel_entry
+from harness.machine import kernel_layout, simh
+from harness.machine.build import KERNEL
+from harness.machine.console_halt import HaltWatcher
 from harness.machine.console_watch import Leave, LineWatcher
-from harness.machine.scripted_machine import ScriptError, read_kernel_map
-from harness.machine import simh
-from harness.machine.simh import KERNEL
+from harness.machine.kernel_layout import KernelMapError, read_kernel_map
 
 # the 11/23's pace (CLK RATE, 300K instructions/s) from the first instruction; SIMH's
-# SET THROTTLE cannot pace the kernel's WAIT (pdp11-devices/kw11l.c)
+# SET THROTTLE cannot pace the kernel's WAIT (pdp11-devices/bus/kw11l.c)
 REALTIME = "set clk realtime"
 # --fast: full speed while the FORTH works; while KEY WAITs the KW11-L sleeps the
-# host at the 11/23's pace (pdp11-devices/kw11l.c), so an idle prompt costs little
+# host at the 11/23's pace (pdp11-devices/bus/kw11l.c), so an idle prompt costs little
 IDLE = "set cpu idle"
 # The amplifier rack starts switched off, as the lab's operator left it: the axes
 # stand still (z's brake on) however long the blocks take to load or the user
@@ -51,11 +51,13 @@ RACK_HINT = ("The amplifier rack starts OFF: the axes stand still. After Set.Up.
 SIMH_ERROR = re.compile(r"(Unit not attached|Non-existent[^\r\n]*|[A-Z][^\r\n]*error[^\r\n]*)")
 
 
-def boot_script(disk, trace=None, fast=False, kernel=KERNEL, read_only=False):
-    """The console's machine: paced (or idling) as asked, the rack off, a trace."""
+def boot_script(disk, trace=None, fast=False, kernel=KERNEL, timed=False, read_only=False):
+    """The console's machine: paced (or idling) as asked, the rack off, a trace;
+    timed: each instruction takes its KDF11-A time (SET CLK TIMED)."""
     trace_line = f"attach plant {Path(trace).resolve()}\n" if trace else ""
     return simh.boot_script(disk, kernel, setup=f"{IDLE if fast else REALTIME}\n"
-                            f"{RACK_OFF}\n{trace_line}", read_only=read_only)
+                            + ("set clk timed\n" if timed else "")
+                            + f"{RACK_OFF}\n{trace_line}", read_only=read_only)
 
 
 def simh_exit_report(status, disk):
@@ -139,7 +141,7 @@ def bye_halt(kernel=KERNEL):
     """What SIMH prints when the kernel's BYE word halts at (BYE), or None."""
     try:
         bye = read_kernel_map(Path(kernel).with_suffix(".map")).get("(BYE)")
-    except ScriptError:
+    except KernelMapError:
         return None
     return None if bye is None else b"HALT instruction, PC: %06o" % (bye + 2)
 
@@ -190,7 +192,7 @@ def _simh(child, command):
 def _unwritten(child, kernel):
     try:
         symbols = read_kernel_map(Path(kernel).with_suffix(".map"))
-    except ScriptError:
+    except KernelMapError:
         return None
     return block_buffers.read_unwritten(symbols, lambda command: _simh(child, command))
 
@@ -262,12 +264,13 @@ def _interact(child, typed, shown):
 
 
 def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BUSY_WAIT,
-            read_only=False):
+            timed=False, read_only=False):
     """Run the console until the user leaves; the exit status (0: all written)."""
     with tempfile.TemporaryDirectory(prefix="console-") as tmp:
         ini = Path(tmp) / "console.ini"
-        ini.write_text(boot_script(disk, trace, fast, kernel, read_only))
-        pace = "full speed" if fast else "real-time pace (300K instructions/s)"
+        ini.write_text(boot_script(disk, trace, fast, kernel, timed, read_only))
+        pace = "full speed" if fast else ("real-time pace (KDF11-A instruction times)" if timed
+                                          else "real-time pace (300K instructions/s)")
         mode = " (read-only: FLUSH will fail)" if read_only else ""
         print(f"[console] booting the FORTH on the PDP-11/23, {pace}, disk {disk}{mode}")
         print(f"[console] {HINT}")
@@ -280,7 +283,7 @@ def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BU
         watcher = LineWatcher(bye_halt(kernel))
         hangup = signal.signal(signal.SIGHUP, _on_hangup)
         try:
-            halts = HaltWatcher(kernel, kernel_entry(Path(kernel).with_suffix(".map")) or 0)
+            halts = HaltWatcher(kernel, kernel_layout.entry(Path(kernel).with_suffix(".map")) or 0)
             _interact(child, _typed(watcher), lambda data: halts.feed(watcher.output(data)))
         except Leave as way:
             signal.signal(signal.SIGHUP, signal.SIG_IGN)     # leaving: no second hangup

@@ -11,7 +11,7 @@ the FORTH's UPDATEd block buffers are written before the simulator ends:
 
 Each raises Leave before the simulator sees it. SIMH's own QUIT, EXIT and BYE at
 sim> are not watched here: however they are typed, edited or read from a DO file,
-the simulator FLUSHes the FORTH's blocks first (pdp11-devices/leave_check.c),
+the simulator FLUSHes the FORTH's blocks first (pdp11-devices/simh/leave_check.c),
 which a watcher of keystrokes could not promise (the terminal edits the line). Whether SIMH has the prompt is
 followed from the output (a chunk ending in "sim> ") and from the commands typed
 there (RUN, GO, CONT, BOOT and STEP give the machine back to the FORTH). Pure

@@ -6,7 +6,7 @@ read) needs no such wait: reap it and close at once. A scripted scenario spends
 about half its wall time in that pause otherwise.
 
 And quitting SIMH: its QUIT FLUSHes the FORTH's UPDATEd blocks first and is
-refused when they cannot be written (pdp11-devices/leave_check.c)."""
+refused when they cannot be written (pdp11-devices/simh/leave_check.c)."""
 import re
 
 import pexpect

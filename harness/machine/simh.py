@@ -36,18 +36,14 @@ import tempfile
 import threading
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[2]
-PDP11 = ROOT / "build" / "pdp11"
-PDP11_STOCK = ROOT / "build" / "pdp11-stock"
-MACHINE_INI = ROOT / "pdp11-devices" / "machine.ini"
-KERNEL = ROOT / "build" / "kernel.lda"
+from harness.machine.build import KERNEL, MACHINE_INI, PDP11
 
 _EXAMINED = re.compile(r"^([A-Za-z0-9_]+):\t([0-9]+)\s*$", re.M)
 
 
 # The simulator's exit status when the startup script's disk is written by another
-# simulator (pdp11-devices/rl_one_writer.c), and after QUIT -F left UPDATEd blocks
-# unwritten (pdp11-devices/leave_check.c).
+# simulator (pdp11-devices/simh/rl_one_writer.c), and after QUIT -F left UPDATEd blocks
+# unwritten (pdp11-devices/simh/leave_check.c).
 DISK_HELD = 3
 LEFT_WITHOUT_BLOCKS = 1
 

@@ -2,8 +2,8 @@
 lines of issue 8's kinds end at the prompt every one, and the blocks still
 load and move the robot afterwards; then 4 rounds of a second simulator on the
 fuzz's image (refused read-write, harmless read-only)."""
-from harness.bench.fuzz import fuzz
-from harness.bench.fuzz_lines import LineMaker
+from harness.fuzz.console_fuzz import fuzz
+from harness.fuzz.lines import LineMaker
 
 
 def test_lines_are_seeded():

@@ -1,7 +1,7 @@
 """Every way out at the page's sim> writes the FORTH's UPDATEd blocks first
 (issue 23): SIMH's QUIT typed, edited with the terminal's ^W, abbreviated or read
 from a DO file, through the page's websocket; the simulator FLUSHes
-(pdp11-devices/leave_check.c), the lab reports it and exits 0. And the FORTH's BYE
+(pdp11-devices/simh/leave_check.c), the lab reports it and exits 0. And the FORTH's BYE
 word inside a line ends the lab as it ends make run."""
 import asyncio
 import contextlib

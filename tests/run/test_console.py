@@ -2,14 +2,14 @@
 back, and every way out (BYE, ^D, ^C and QUIT at sim>) leaves an UPDATEd block on
 the disk, or says plainly which blocks were not written."""
 import os
-import shutil
 import sys
 
 import pexpect
 import pytest
 
 from harness.machine.console_session import probe_prompt
-from tests.run.common import PRISTINE, ROOT, failing_fsync_library, needs_build, outlived
+from harness.machine.build import fresh_disk
+from tests.run.common import ROOT, failing_fsync_library, needs_build, outlived
 
 pytestmark = needs_build
 
@@ -33,8 +33,7 @@ def console(disk, *extra, env=None):
 
 def fresh_console(tmp_path, *extra, env=None):
     """The console on a fresh copy of the pristine disk: the child and the disk."""
-    disk = tmp_path / "work.dsk"
-    shutil.copyfile(PRISTINE, disk)
+    disk = fresh_disk(tmp_path, "work.dsk")
     return console(disk, *extra, env=env), disk
 
 
@@ -74,6 +73,20 @@ def test_console_command_simh_prompt_and_bye_flushes(tmp_path):
     child.send("BYE\r")
     expect_left_safely(child, disk, b"typed at the console")
     assert (tmp_path / "t.csv").read_text().startswith("time_s,axis,")
+
+
+def test_console_timed_runs_on_the_kdf11s_times(tmp_path):
+    child, disk = fresh_console(tmp_path, "--timed", "--fast")
+    child.send("\x05")                                   # ^E: SIMH's prompt
+    child.expect("sim> ")
+    child.send("show clk rate\r")
+    child.expect(r"rate=13333333 units \(timed")
+    child.expect("sim> ")
+    child.send("cont\r")
+    assert probe_prompt(child) == 0
+    child.send("BYE\r")
+    child.expect(FLUSHED)
+    child.expect(pexpect.EOF)
 
 
 def test_ctrl_d_at_the_simh_prompt_flushes_first(tmp_path):

@@ -1,5 +1,5 @@
 """One simulator writes a disk image at a time (issue 16, item 8): the RL's
-ATTACH takes an exclusive lock (pdp11-devices/rl_one_writer.c), so a second
+ATTACH takes an exclusive lock (pdp11-devices/simh/rl_one_writer.c), so a second
 simulator on the same image is refused naming the holder, through every entry
 point, or attaches it read-only when asked; the lock dies with its process."""
 import os
