@@ -13,8 +13,9 @@ the device's own modifier table, in the table's order. The lab's own shell and
 """
 import re
 
-from harness.machine.simh_command import EXITS, simh_command
+from harness.machine.simh_command import simh_command
 
+EXITS = ("EXIT", "QUIT", "BYE")   # SIMH FLUSHes the FORTH's blocks first (leave_check.c)
 MAX_LINE = 200      # SIMH reads CBUFSIZE bytes a line: a longer one would split in two
 MAY_RUN = ("SHOW", "EXAMINE", "DEPOSIT", "SET", "STEP", "CONT", "BREAK", "NOBREAK", "HELP")
 MAY_RUN_TEXT = ("SHOW, EXAMINE, DEPOSIT, SET PLANT/CLK/LAB/CPU HISTORY, STEP, CONT, "

@@ -14,10 +14,12 @@ turns one into the CR the FORTH's ACCEPT also takes), so if SIMH stops by itself
 (a breakpoint, STEP's end) while keys are on their way, they wait in SIMH's line
 unfinished, and the guard's checked line starts with two ^U that erase them.
 
-keys() returns actions: ("pty", bytes) for the simulator, ("page", bytes) for
-the page's terminal only. The ways out (BYE, ^D, ^C or QUIT/EXIT/BYE at sim>)
-raise the LineWatcher's Leave with `actions` (what still goes out before it):
-the lab then leaves as the console does, FLUSHing the FORTH's blocks first.
+keys() returns actions: ("pty", bytes) for the simulator (through the key feed,
+whose watcher sees BYE and ^D), ("page", bytes) for the page's terminal only. ^C
+and ^D at sim> raise the LineWatcher's Leave with `actions` (what still goes out
+before it): the lab then leaves as the console does, FLUSHing the FORTH's blocks
+first. SIMH's QUIT, EXIT and BYE are allowed: SIMH FLUSHes first itself
+(pdp11-devices/simh/leave_check.c).
 """
 import termios
 
@@ -53,6 +55,7 @@ class SimPromptGuard:
         self.waiting = bytearray()       # keys typed after the ^E, before the prompt
         self.escape = None               # inside an escape sequence (arrow keys)
         self.after_cr = False            # the FORTH's last key was CR (skip its LF)
+        self.sent = False                # keys() stopped after a line sent to SIMH
 
     @property
     def at_prompt(self):
@@ -60,11 +63,13 @@ class SimPromptGuard:
 
     def keys(self, data):
         """The actions for `data` typed on the page (b"" when the prompt just came:
-        the keys that waited for it)."""
+        the keys that waited for it). It stops after a checked line went to SIMH:
+        the caller writes it (its CONT gives the machine back), then calls again
+        while more() says keys wait."""
         out = []
+        data, self.waiting = bytes(self.waiting) + data, bytearray()
+        self.sent = False
         try:
-            if self.waiting and self.at_prompt:
-                data, self.waiting = bytes(self.waiting) + data, bytearray()
             for i, byte in enumerate(data):
                 if self.stopping and not self.at_prompt:
                     self.waiting += data[i:]     # SIMH is stopping: the line waits for sim>
@@ -73,13 +78,20 @@ class SimPromptGuard:
                     continue
                 if self.at_prompt:
                     self.stopping = False
-                    self._prompt_key(byte, out)
+                    if self._prompt_key(byte, out):
+                        self.waiting += data[i + 1:]
+                        self.sent = True
+                        break
                 else:
                     self._forth_key(byte, out)
         except Leave as way:
             way.actions = out
             raise
         return _merged(out)
+
+    def more(self):
+        """Keys wait behind a line just sent to SIMH."""
+        return self.sent and bool(self.waiting)
 
     def _escape(self, byte):
         """Escape sequences (arrow and function keys) are dropped: neither the
@@ -108,8 +120,7 @@ class SimPromptGuard:
         self.after_cr = byte == CR
         if byte == LF:
             byte = CR                            # ACCEPT takes either; SIMH's line only LF
-        self.watcher.feed(bytes([byte]))        # BYE, ^D: Leave
-        out.append(("pty", bytes([byte])))
+        out.append(("pty", bytes([byte])))      # the key feed's watcher sees BYE, ^D
         if byte == CTRL_E:
             self.stopping = True
 
@@ -119,7 +130,7 @@ class SimPromptGuard:
         if byte == CTRL_C:
             raise Leave("^C at SIMH's prompt")
         if byte in (CR, LF):
-            self._line_done(out)
+            return self._line_done(out)
         elif byte in (BS, DEL):
             self._erase(1, out)
         elif byte in (CTRL_U, CTRL_E):
@@ -147,9 +158,9 @@ class SimPromptGuard:
         if why:
             out.append(("page", typed + f"\r\nlab: refused: {why}. From the page SIMH "
                         f"runs {MAY_RUN_TEXT}.\r\nsim> ".encode("latin-1")))
-            return
-        self.watcher.feed(bytes([CTRL_U]) + typed + b"\r")   # QUIT: Leave; CONT: FORTH runs
-        out.append(("pty", KILL + typed + b"\n"))
+            return False
+        out.append(("pty", KILL + typed + b"\n"))  # its watcher: CONT gives the FORTH the keys
+        return True
 
 
 def _merged(actions):

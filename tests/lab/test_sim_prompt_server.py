@@ -179,20 +179,20 @@ def test_arrow_keys_do_not_reach_the_forth_line(lab_server):
 
 
 def test_quit_from_the_page_leaves_through_flush(tmp_path_factory):
-    """QUIT at the page's sim> is the lab's own way out: the FORTH FLUSHes, the
-    disk is detached, the lab ends."""
+    """QUIT at the page's sim> reaches SIMH, which FLUSHes the FORTH's blocks
+    first (leave_check.c); the lab reports it and ends."""
     from harness.lab.launch import LabProcess
     server = LabProcess(tmp_path_factory.mktemp("quit"))
 
     async def steps(page):
         await to_sim(page)
         await page.type("qu\r")
-        return await page.until(r"Bye\.")
+        return await page.until(r"FLUSHed the FORTH's UPDATEd blocks first")
     try:
         text = session(server, steps)
     finally:
         status = server.stop()
-    assert "FLUSH answered ok" in text and status == 0
+    assert "left at sim>" in text and status == 0
 
 
 @pytest.mark.parametrize("line", ["show version"])
