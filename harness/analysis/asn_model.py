@@ -34,9 +34,9 @@ class Params:
     goal_y: int = 1600
     step_size: int = 400        # counts per move
     goal_size: int = 200        # |dx| and |dy| at most this: at the goal
-    max_steps: int = 50
-    rate: int = 64              # learning rate c, in 1/4096 per count of payoff
-    noise: int = 128            # noise amplitude, units of s
+    max_steps: int = 100
+    rate: int = 16              # learning rate c, in 1/16384 per count of payoff
+    noise: int = 4096           # noise amplitude, units of s
     seed: int = 1983
 
     # the FORTH names of the fields, as block 1070 defines them

@@ -32,7 +32,7 @@ def script_text(trials, rate=None):
     lines = ["# The ASN learning on the emulated robot (make asn-runs, docs/learning.md)",
              f"#simh set plant sample={SAMPLE}",
              "1000 LOAD 1070 LOAD",
-             "Set.Up.Robot Load.Net" + ("" if rate is None else f" {rate} Rate !"),
+             "Set.Up.Robot" + ("" if rate is None else f" {rate} Rate !"),
              "#simh show clk"]
     for _ in range(trials):
         lines += ["Trial", "#simh show clk"]
