@@ -26,13 +26,15 @@ LINE_LIMIT = 900          # simulated s a Trial line may take: 100 steps of at m
 SAMPLE = 20               # plant trace samples per simulated second
 
 
-def script_text(trials, rate=None):
-    """A console script: load, set up, then `trials` Trial lines, each
-    followed by SHOW CLK (the trial's end time), then .Net."""
+def script_text(trials, rate=None, seed=None):
+    """A console script: load, set up (another Rate, another seed), then
+    `trials` Trial lines, each followed by SHOW CLK (the trial's end time),
+    then .Net."""
     lines = ["# The ASN learning on the emulated robot (make asn-runs, docs/learning.md)",
              f"#simh set plant sample={SAMPLE}",
              "1000 LOAD 1070 LOAD",
-             "Set.Up.Robot" + ("" if rate is None else f" {rate} Rate !"),
+             "Set.Up.Robot" + ("" if rate is None else f" {rate} Rate !")
+             + ("" if seed is None else f" {seed} Seed0 ! Reset.Net"),
              "#simh show clk"]
     for _ in range(trials):
         lines += ["Trial", "#simh show clk"]
@@ -40,10 +42,10 @@ def script_text(trials, rate=None):
     return "\n".join(lines) + "\n"
 
 
-def run(outdir, name, trials, rate=None):
+def run(outdir, name, trials, rate=None, seed=None):
     """Run the script; (transcript text, trace path, wall seconds)."""
     path = outdir / f"{name}.script"
-    path.write_text(script_text(trials, rate))
+    path.write_text(script_text(trials, rate, seed))
     t0 = time.monotonic()
     done = subprocess.run([sys.executable, "-m", "harness", "run", str(path),
                            "--out", str(outdir), "--line-limit", str(LINE_LIMIT)],
@@ -77,6 +79,8 @@ def main(argv=None):
     ap.add_argument("outdir", type=Path)
     ap.add_argument("--trials", type=int, default=50)
     ap.add_argument("--figures", type=Path, metavar="DIR")
+    ap.add_argument("--other-seeds", type=int, nargs="*", default=[1, 2, 3, 4], metavar="SEED",
+                    help="learning runs with these noise seeds too, reported only")
     a = ap.parse_args(argv)
     a.outdir.mkdir(parents=True, exist_ok=True)
     params = asn_model.Params.from_blocks()
@@ -117,6 +121,17 @@ def main(argv=None):
     print(f"    trials.csv and trials-again.csv: {'the same bytes' if same_csv else 'DIFFER'}")
     if not same_csv:
         failed.append("two runs of the same script wrote different CSVs")
+
+    for seed in a.other_seeds:
+        text, _, wall = run(a.outdir, f"seed-{seed}", a.trials, seed=seed)
+        trials = asn_log.parse(text)
+        first, last = means(trials)
+        differ, same, _ = agreement(trials, text, params.but(seed=seed))
+        print(f"==> seed {seed}: mean steps first 10 {first:.1f}, last 10 {last:.1f} "
+              f"(ratio {last / first:.3f}); model {'agrees' if same and not differ else 'DIFFERS'}; "
+              f"{wall:.1f} s wall")
+        if differ or not same:
+            failed.append(f"seed {seed}: the model disagrees")
 
     if a.figures:
         draw(a.figures, a.outdir, results, params)
