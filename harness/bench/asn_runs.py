@@ -4,7 +4,8 @@ servo, by scripted runs (`python -m harness run`: lock-step, deterministic).
 
     python -m harness.bench.asn_runs OUTDIR [--trials N] [--figures DIR]
 
-Writes in OUTDIR the scripts, their transcripts and plant traces, and
+Writes in OUTDIR the scripts, their transcripts, the learning run's plant
+trace (learn.trace.csv), and
 trials.csv (the learning run: a row per trial), trials-again.csv (the same
 script run again: must be the same bytes), control.csv (Rate 0: no
 learning). Checks, and prints: the model (harness/analysis/asn_model.py)
@@ -42,8 +43,9 @@ def script_text(trials, rate=None, seed=None):
     return "\n".join(lines) + "\n"
 
 
-def run(outdir, name, trials, rate=None, seed=None):
-    """Run the script; (transcript text, trace path, wall seconds)."""
+def run(outdir, name, trials, rate=None, seed=None, keep_trace=False):
+    """Run the script; (transcript text, trace path or None, wall seconds).
+    Only a kept plant trace stays (each is some 30 MB, the control's 150)."""
     path = outdir / f"{name}.script"
     path.write_text(script_text(trials, rate, seed))
     t0 = time.monotonic()
@@ -54,7 +56,11 @@ def run(outdir, name, trials, rate=None, seed=None):
     if done.returncode:
         raise SystemExit(f"asn-runs: {name}: python -m harness run failed:\n"
                          f"{done.stdout}{done.stderr}")
-    return (outdir / f"{name}.transcript").read_text(), outdir / f"{name}.trace.csv", wall
+    trace = outdir / f"{name}.trace.csv"
+    if not keep_trace:
+        trace.unlink()
+        trace = None
+    return (outdir / f"{name}.transcript").read_text(), trace, wall
 
 
 def agreement(trials, text, params):
@@ -88,7 +94,7 @@ def main(argv=None):
 
     results = {}
     for name, rate in (("learn", None), ("again", None), ("control", 0)):
-        text, trace, wall = run(a.outdir, name, a.trials, rate)
+        text, trace, wall = run(a.outdir, name, a.trials, rate, keep_trace=name == "learn")
         trials = asn_log.parse(text)
         if len(trials) != a.trials:
             raise SystemExit(f"asn-runs: {name}: {len(trials)} trials in the transcript, "
