@@ -1,5 +1,5 @@
 # mk/asn.mk: the paper's Associative Search Network, reconstructed (issue 20):
-# blocks 1070-1077, docs/learning.md.
+# blocks 1070-1078, docs/learning.md.
 #   make asn-runs    50 trials learning (twice: the same CSV), with Rate 0, and
 #                    with four other noise seeds, by scripted runs, in build/asn/
 #                    (trials.csv, transcripts, traces); the model checked at

@@ -1,4 +1,4 @@
-"""What the ASN blocks (1070-1077) printed, as trials: each step's counters
+"""What the ASN blocks (1070-1078) printed, as trials: each step's counters
 and action (`S x y action`, the last step of a trial without an action),
 each trial's summary (`T trial steps late payoff`), and the simulated time
 SIMH's `SHOW CLK` gave after it in a scripted run's transcript (the script

@@ -36,13 +36,14 @@ class Params:
     goal_size: int = 200        # |dx| and |dy| at most this: at the goal
     max_steps: int = 100
     rate: int = 16              # learning rate c, in 1/16384 per count of payoff
-    noise: int = 4096           # noise amplitude, units of s
+    noise: int = 8192           # noise amplitude at first, units of s
+    cooling: int = 10           # the noise falls as cooling / (cooling + trials)
     seed: int = 1983
 
     # the FORTH names of the fields, as block 1070 defines them
     NAMES = {"arena": "Arena", "goal_x": "Goal.X", "goal_y": "Goal.Y",
              "step_size": "Step.Size", "goal_size": "Goal.Size",
-             "max_steps": "Max.Steps", "rate": "Rate", "noise": "Noise",
+             "max_steps": "Max.Steps", "rate": "Rate", "noise": "Noise", "cooling": "Cooling",
              "seed": "Seed0"}
 
     @classmethod
@@ -104,7 +105,10 @@ class Asn:
         return self.seed
 
     def jitter(self):
-        return star_slash((self.random() >> 8) - 128, self.p.noise, 128)
+        """Block 1072's Jitter: uniform, +-noise cooled to noise * cooling /
+        (cooling + trials done)."""
+        amplitude = star_slash(self.p.noise, self.p.cooling, self.p.cooling + self.trials)
+        return star_slash((self.random() >> 8) - 128, amplitude, 128)
 
     # -- block 1072: the elements
     def activation(self, j, x):

@@ -1,4 +1,4 @@
-"""Figures of the ASN's learning (blocks 1070-1077, docs/learning.md):
+"""Figures of the ASN's learning (blocks 1070-1078, docs/learning.md):
 
     learning_figure(trials, control)       # steps per trial, learning and rate 0
     paths_figure(trials, [1, 10, 50], p, trace=None)   # x-y paths of those trials

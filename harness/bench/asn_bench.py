@@ -1,4 +1,4 @@
-"""The ASN's cost on the 11/23 (blocks 1070-1077, docs/learning.md): one
+"""The ASN's cost on the 11/23 (blocks 1070-1078, docs/learning.md): one
 learning step's computation, Think below (read the counters, the 18 fields,
 the payoff, Learn's 72 weight changes, Choose's 72 products and 4 noises,
 the copy of the pattern: Step without its printing, Act.Move and Settle),

@@ -1,4 +1,4 @@
-"""The runs behind docs/learning.md: the ASN (blocks 1070-1077, a
+"""The runs behind docs/learning.md: the ASN (blocks 1070-1078, a
 reconstruction) learning to move the emulated robot on the printed 1983
 servo, by scripted runs (`python -m harness run`: lock-step, deterministic).
 

@@ -1,4 +1,4 @@
-"""Fixtures for the ASN tests (blocks 1070-1077): the robot on a fresh copy
+"""Fixtures for the ASN tests (blocks 1070-1078): the robot on a fresh copy
 of build/robot.dsk, driven in lock-step (harness/machine/robot.py)."""
 import shutil
 

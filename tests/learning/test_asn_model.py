@@ -21,7 +21,7 @@ def test_fields_and_payoff():
 
 def test_parameters_come_from_block_1070(tmp_path):
     p = am.Params.from_blocks()
-    assert (p.step_size, p.rate, p.noise, p.max_steps) == (400, 16, 4096, 100)
+    assert (p.step_size, p.rate, p.noise, p.cooling, p.max_steps) == (400, 16, 8192, 10, 100)
     (tmp_path / "1070.txt").write_text("( nothing )\n400 VAR Step.Size\n")
     with pytest.raises(ValueError, match="defines no Arena"):
         am.Params.from_blocks(tmp_path)

@@ -1,4 +1,4 @@
-"""The ASN blocks (1070-1077, a reconstruction, docs/learning.md) on the
+"""The ASN blocks (1070-1078, a reconstruction, docs/learning.md) on the
 emulated robot with the printed servo: they load after 1000 LOAD, the Python
 model chooses the FORTH's action at each of the first 200 steps and ends
 with its weights, the weights survive leaving the FORTH, misuse is refused
@@ -45,6 +45,10 @@ def test_weights_survive_leaving_the_forth(disk):
         r.send("Trial")
         before = asn_log.parse_net(r.send(".Net"))
     assert before[0] == 1 and any(any(row) for row in before[2])
+    with open(disk, "rb") as f:                               # block 1079: text, LOADable
+        f.seek(1079 * 1024)
+        text = f.read(1024).decode("ascii")
+    assert text.isprintable() and text.startswith("( ASN net:") and "Net!" in text
     with Robot(disk=disk, timeout=600) as r:                # a new boot, the same disk
         r.send("1000 LOAD 1070 LOAD")
         assert asn_log.parse_net(r.send(".Net")) == before
@@ -54,10 +58,10 @@ def test_weights_survive_leaving_the_forth(disk):
 
 
 def test_listing_lists_the_blocks():
-    done = subprocess.run([sys.executable, "-m", "harness", "listing", "--blocks", "1070-1077"],
+    done = subprocess.run([sys.executable, "-m", "harness", "listing", "--blocks", "1070-1078"],
                           capture_output=True, text=True)
     assert done.returncode == 0, done.stderr
-    for block in range(1070, 1078):
+    for block in range(1070, 1079):
         assert f"Block {block}" in done.stdout
     for word in ("Choose", "Learn", "Act.Move", "Trial", "Trials"):
         assert f"header of {word}\n" in done.stdout

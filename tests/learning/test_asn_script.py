@@ -1,4 +1,4 @@
-"""The ASN (blocks 1070-1077) by scripted runs (python -m harness run), as
+"""The ASN (blocks 1070-1078) by scripted runs (python -m harness run), as
 make asn-runs drives it: two runs of the same script write the same
 trials.csv, byte for byte (a short version of make asn-runs' check)."""
 import subprocess
