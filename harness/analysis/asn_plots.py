@@ -93,11 +93,13 @@ def paths_figure(trials, numbers, p, trace=None):
     return fig
 
 
-def weights_figure(weights, p):
+def weights_figure(weights, p, trials=0):
     """Left: the action the weights prefer (no noise) at each point of the
-    step lattice, and by how much. Right: the weights themselves."""
+    step lattice, and by how much against the noise after `trials` trials.
+    Right: the weights themselves."""
     net = am.Asn(p)
     net.weights = [list(row) for row in weights]
+    noise = am.star_slash(p.noise, p.cooling, p.cooling + trials)
     fig = Figure(figsize=(WIDTH * 1.6, WIDTH * 0.72), layout="constrained")
     left, right = fig.subplots(1, 2, width_ratios=[1, 1.25])
     _arena(left, p)
@@ -108,12 +110,13 @@ def weights_figure(weights, p):
             best = int(np.argmax(s))
             margin = sorted(s)[-1] - sorted(s)[-2]
             dx, dy = ARROW[best]
-            strength = min(1.0, margin / max(1, p.noise))
+            strength = min(1.0, margin / max(1, noise))
             left.arrow(gx, gy, dx * p.step_size * 0.55, dy * p.step_size * 0.55,
                        width=18, head_width=110, head_length=110, length_includes_head=True,
                        color=(0.1, 0.3 + 0.4 * (1 - strength), 0.8, 0.35 + 0.65 * strength))
     left.set_ylabel("y counter")
-    left.set_title("largest s at each step point (darker: surer)", fontsize=10)
+    left.set_title(f"largest s at each step point (darker: surer against\n"
+                   f"the noise after {trials} trials, +-{noise})", fontsize=10)
     w = np.array(weights, dtype=float)
     lim = max(1.0, np.abs(w).max())
     im = right.imshow(w, cmap="RdBu_r", vmin=-lim, vmax=lim, aspect="auto")
@@ -122,6 +125,6 @@ def weights_figure(weights, p):
             [f"y{k * am.FIELD_SPACING}" for k in range(am.FIELDS)]
     right.set_xticks(range(am.N_IN), ticks, rotation=90, fontsize=7)
     right.set_xlabel("input: the receptive field centred at x or y (counts)")
-    right.set_title("weights w[j,i] (16-bit, from .Net)", fontsize=10)
+    right.set_title(f"weights w[j,i] after {trials} trials (16-bit, from .Net)", fontsize=10)
     fig.colorbar(im, ax=right, shrink=0.8)
     return fig

@@ -151,10 +151,10 @@ def draw(figdir, outdir, results, params):
     figdir.mkdir(parents=True, exist_ok=True)
     text, trace, trials = results["learn"]
     numbers = [n for n in (1, 10, 50) if n <= len(trials)]
-    _, _, weights = asn_log.parse_net(text)
+    done, _, weights = asn_log.parse_net(text)
     figures = {"asn-learning.png": asn_plots.learning_figure(trials, results["control"][2]),
                "asn-paths.png": asn_plots.paths_figure(trials, numbers, params, tr.read(trace)),
-               "asn-weights.png": asn_plots.weights_figure(weights, params)}
+               "asn-weights.png": asn_plots.weights_figure(weights, params, done)}
     for name, fig in figures.items():
         plots.save(fig, [figdir / name, outdir / name])
         print(figdir / name)
