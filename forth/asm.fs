@@ -2,7 +2,7 @@
 ( One source, two bindings: the host metacompiler includes it to   )
 ( assemble CODE words into the target image, and the kernel gets  )
 ( it metacompiled as vocabulary ASSEMBLER.  Portable subset only;  )
-( the includer defines A, AHERE A@ A! first: forth-contract.md.    )
+( the includer defines A, AHERE A@ A! first: forth/ASSEMBLER.md. )
 ( Numbers are decimal, octal in the comments, because the host     )
 ( reads this file without the target's trailing-O octal literals.  )
 ( Syntax and word list: forth/ASSEMBLER.md.                        )

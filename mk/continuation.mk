@@ -8,7 +8,7 @@ bench-continuation: $(BUILD)/kernel.lda $(BUILD)/pdp11 $(BUILD)/robot.dsk venv
 	@$(PY) -m harness.bench.continuation_bench
 
 continuation-runs: $(BUILD)/kernel.lda $(BUILD)/pdp11 $(BUILD)/robot.dsk venv
-	@$(PY) -m harness.bench.continuation_runs $(BUILD)/continuation --figures docs/img
+	@$(PY) -m harness.figures.continuation_runs $(BUILD)/continuation --figures docs/img
 
 BENCHES += bench-continuation
 .PHONY: bench-continuation continuation-runs

@@ -8,8 +8,8 @@ bench-robot: $(BUILD)/kernel.lda $(BUILD)/pdp11 $(BUILD)/robot.dsk venv
 	@$(PY) -m harness.bench.robot_bench
 
 servo-runs: $(BUILD)/kernel.lda $(BUILD)/pdp11 $(BUILD)/robot.dsk venv
-	@$(PY) -m harness.bench.servo_runs $(BUILD)/servo/printed --figures docs/img/printed
-	@$(PY) -m harness.bench.servo_runs $(BUILD)/servo/ramp --block 1030 --then Ramp.Servo \
+	@$(PY) -m harness.figures.servo_runs $(BUILD)/servo/printed --figures docs/img/printed
+	@$(PY) -m harness.figures.servo_runs $(BUILD)/servo/ramp --block 1030 --then Ramp.Servo \
 	    --figures docs/img/ramp
 
 BENCHES += bench-robot

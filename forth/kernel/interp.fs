@@ -1,4 +1,5 @@
-\ forth/kernel/interp.fs: text interpreter, compiler, vocabularies, errors, QUIT.
+\ forth/kernel/interp.fs: the input source, parsing, lookup, the compiler's words,
+\ vocabularies (the outer interpreter, error reports and QUIT: quit.fs).
 
 \ ---- the input source ---------------------------------------------------------
 : SOURCE  ( -- a u )  BLK @ IF BLK @ (BLOCK) 1024 ELSE SRC 2@ THEN ;  \ CORE: (BLOCK): disk.fs

@@ -211,7 +211,7 @@ CODE (FIND)  ( a u lfa -- nfa | 0 )
 \ ^C is not queued: it interrupts whatever runs (a runaway loop) with error -28
 
 \ KEY's idle step (JSR PC): with the ring empty, WAIT for the next interrupt, so
-\ the host can idle (SET CPU IDLE, pdp11-devices/kw11l.c); time still passes
+\ the host can idle (SET CPU IDLE, pdp11-devices/bus/kw11l.c); time still passes
 \ by the instruction count. Its layout is fixed: CMP at +0, BNE at +6, WAIT at
 \ +8, RTS at +10. A receive interrupt taken at +6 or +8 has already put its
 \ character in the ring, so RXINT returns to +10 instead of letting WAIT sleep

@@ -5,7 +5,6 @@
 
 require load.fs
 
-: file-exists? ( addr u -- f )  r/o open-file if drop false else close-file throw true then ;
 : kernel ( addr u -- )  meta-include ;
 
 decimal
@@ -24,12 +23,8 @@ s" forth/kernel/string.fs" kernel
 s" forth/kernel/toolsext.fs" kernel
 s" forth/kernel/facility.fs" kernel
 s" forth/kernel/heap.fs" kernel
-s" forth/kernel/disk.fs" file-exists? [if]
-  s" forth/kernel/disk.fs" kernel
-[else]
-  s" forth/kernel/nodisk.fs" kernel
-[then]
-s" forth/kernel/editor.fs" file-exists? [if]  s" forth/kernel/editor.fs" kernel  [then]
+s" forth/kernel/disk.fs" kernel
+s" forth/kernel/editor.fs" kernel
 s" forth/asm-target.fs" kernel   \ vocabulary ASSEMBLER (the ASSEMBLER helper's binding)
 s" forth/kernel/code.fs" kernel
 s" forth/kernel/boot.fs" kernel

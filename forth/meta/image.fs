@@ -23,7 +23,7 @@ $E000 tlimit !        \ 56 KB of RAM below the I/O page
 : tc, ( c -- )  there tc!  1 tallot ;
 : talign ( -- )  there 1 and tallot ;
 
-\ The assembler's four hooks (forth-contract.md): assemble into the image.
+\ The assembler's four hooks (forth/ASSEMBLER.md): assemble into the image.
 : A, ( x -- )  t, ;
 : AHERE ( -- ta )  there ;
 : A@ ( ta -- x )  t@ ;

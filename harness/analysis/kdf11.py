@@ -1,7 +1,7 @@
 """Price executed PDP-11 instructions on a KDF11-A (PDP-11/23), memory management off.
 
 Time = basic + source + destination (DEC KDF11-B User's Guide, Appendix B, tables
-B-4..B-7, as transcribed in shared/kdf11-timing.md; the "MMU off" column). JMP and
+B-4..B-7, as transcribed in docs/kdf11-timing.md; the "MMU off" column). JMP and
 JSR take their B-7 whole time; branches, SOB, RTS, RTI, RTT, MARK, traps, WAIT and the
 condition-code operators cost their basic time alone.
 

@@ -27,18 +27,15 @@ colon definitions whose bodies are calls to assembler words; the servo's machine
 code is laid down by block 1008 line 2, when CODE Interrupt.Servo runs them.
 """
 import re
-import shutil
 import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from harness.machine import simh
-from harness.machine.scripted_machine import KERNEL, KERNEL_MAP, read_kernel_map
+from harness.machine.build import KERNEL, KERNEL_MAP, PRISTINE_DISK as PRISTINE, fresh_disk
+from harness.machine.kernel_layout import BODY, code_field, map_names, read_kernel_map
 
-ROOT = Path(__file__).resolve().parents[2]
-PRISTINE = ROOT / "build" / "robot.dsk"
 BLOCK_BYTES, LINE_CHARS = 1024, 64
-BODY = 4            # a variable's value follows its 4-byte code field (JSR Rn,@#DOVAR)
 # The FORTH's console output shares SIMH's stdout and can land inside an
 # examined line ("6252: ok\n\t001764"), so values are found by address, skipping
 # anything that is not a tab and a number.
@@ -81,11 +78,8 @@ class Span:
 
 
 def _symbols(kernel_map):
-    sym = read_kernel_map(kernel_map)
-    for name in ("PARSE-NAME", "BLK", ">IN", "DP", "STATE", "CONTEXT", "ASSEMBLER"):
-        if name not in sym:
-            raise ListingError(f"{kernel_map} has no {name}: not this project's kernel")
-    return sym
+    return read_kernel_map(kernel_map, ("PARSE-NAME", "BLK", ">IN", "DP", "STATE",
+                                        "CONTEXT", "ASSEMBLER"))
 
 
 def _watched(sym):
@@ -102,8 +96,7 @@ def _load_script(sym, disk, kernel, after_load=""):
 
 def _run(sym, image, kernel, after_load="", command="1000 LOAD"):
     with tempfile.TemporaryDirectory(prefix="listing-") as tmp:
-        disk = Path(tmp) / "robot.dsk"
-        shutil.copyfile(image, disk)          # the image itself is never written
+        disk = fresh_disk(tmp, source=image)   # the image itself is never written
         return simh.run(_load_script(sym, disk, kernel, after_load),
                         keyboard=command + "\r", timeout=120)
 
@@ -165,17 +158,6 @@ def _header_name(words_by_addr, start, expected):
         raw += bytes([w & 0o377, w >> 8])
         addr += 2
     return expected if raw[:count].decode("latin-1").upper() == expected.upper() else ""
-
-
-def map_names(kernel_map):
-    """address -> name for every line of the kernel map (a name defined twice, in
-    two vocabularies, has two addresses)."""
-    names = {}
-    for line in Path(kernel_map).read_text().splitlines():
-        parts = line.split()
-        if len(parts) == 2 and re.fullmatch(r"[0-7]+", parts[0]):
-            names[int(parts[0], 8)] = parts[1]     # ORIGIN DOCOL: the later, the word
-    return names
 
 
 def symbolic(text, operands, constants):
@@ -314,7 +296,7 @@ def make_listing(first=1000, last=1012, image=PRISTINE, kernel=KERNEL, kernel_ma
         header_at = (span.start + 1) & ~1
         span.header = _header_name(words, header_at, span.name)
         if span.header:             # link, count + name (aligned), then the code field
-            span.cfa = header_at + 2 + ((1 + len(span.name) + 1) & ~1)
+            span.cfa = code_field(header_at, len(span.name))
             names[span.cfa] = operands[span.cfa + BODY] = span.name
             if words.get(span.cfa + 2) == sym.get("DOCON"):
                 constants.setdefault(words.get(span.cfa + BODY), span.name)

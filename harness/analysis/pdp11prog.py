@@ -117,16 +117,6 @@ class Program:
         return "".join(lines)
 
 
-def results(output, count, base=RESULTS):
-    """The `count` result words at 2000.. as examined after the run."""
-    ex = simh.examined(output)
-    return [ex[f"{base + 2 * i:o}"] for i in range(count)]
-
-
-def examine_results(count, base=RESULTS):
-    return "".join(f"examine {base + 2 * i:o}\n" for i in range(count))
-
-
 def check_listing(prog, simulator=simh.PDP11):
     """Mismatches between a program's texts and SIMH's disassembly of its words:
     a list of (address, written, disassembled); empty when all agree."""

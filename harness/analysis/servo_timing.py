@@ -6,15 +6,13 @@ QUERY breakpoint, as a scripted run does: harness/machine/scripted_machine.py), 
 the machine stopped at the prompt with the breakpoint removed, and prices every
 execution of the code vector 100 holds (Interrupt.Servo after Set.Up.Robot) for
 the case's simulated seconds (harness/analysis/timing.py)."""
-import shutil
 import tempfile
-from pathlib import Path
 
 from harness.analysis import timing
-from harness.machine.robot import KERNEL, RATE
-from harness.machine.scripted_machine import feed_commands, read_kernel_map
+from harness.machine.build import KERNEL, RATE, fresh_disk
+from harness.machine.kernel_layout import read_kernel_map
+from harness.machine.scripted_machine import feed_commands
 
-DISK = Path(__file__).resolve().parents[2] / "build" / "robot.dsk"
 CASES = {
     "idle": ("idle, 5 s after a move (no command pending; the axes hunt)",
              ["1000 LOAD Set.Up.Robot", "1600 800 400 0 Abs.Move Move.Complete?"], 5),
@@ -38,8 +36,7 @@ def measure(case):
     """(label, TimingReport) of one case of CASES."""
     label, lines, seconds = CASES[case]
     with tempfile.TemporaryDirectory(prefix="servo-timing-") as tmp:
-        disk = Path(tmp) / "robot.dsk"
-        shutil.copy(DISK, disk)
+        disk = fresh_disk(tmp)
         report = timing.measure(setup_script(disk, lines), vector=0o100,
                                 instructions=round(seconds * RATE))
     return label, report

@@ -9,7 +9,8 @@ the table is read, so the plant waits too: a class can walk the servo tick by
 tick. Per axis: Desire.Pos, the counter (what INBUF returns now), Velocity,
 0-Vel, State, Command.Status (the appendix's arrays, block 1000) and the DAC
 code the servo last wrote."""
-from harness.machine.robot import AXES, Robot, numbers
+from harness.machine.plant_rows import AXES
+from harness.machine.robot import Robot, numbers
 
 ARRAYS = ("Desire.Pos", "Velocity", "0-Vel", "State", "Command.Status")
 SETUP = ("1000 LOAD", "Set.Up.Robot")
@@ -37,7 +38,7 @@ class TickView:
         return self.table()
 
     def cells(self, array):
-        return [_signed(self.robot.examine(self.arrays[array] + 2 * i)) for i in range(4)]
+        return [_signed(self.robot.examine(self.arrays[array] + 2 * i)) for i in range(len(AXES))]
 
     def table(self):
         clock = self.robot.simh("show clk")

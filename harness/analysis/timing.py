@@ -39,6 +39,7 @@ from typing import NamedTuple
 
 from harness.analysis import kdf11
 from harness.machine import simh
+from harness.machine.build import RATE
 
 TICK_US = 1e6 / 60              # the 60 Hz line clock's period
 CHUNK = 100_000                 # instructions per history chunk (SIMH allows 262144)
@@ -181,7 +182,7 @@ class TimingReport:
             lines.append("not priced (no figure in the tables): " + ", ".join(
                 f"{k} x{v}" for k, v in sorted(self.unpriced.items())))
         lines.append("KDF11-A times, memory management off: DEC KDF11-B User's Guide "
-                     "tables B-4..B-7, as in shared/kdf11-timing.md (harness/analysis/kdf11.py).")
+                     "tables B-4..B-7, as in docs/kdf11-timing.md (harness/analysis/kdf11.py).")
         return "\n".join(lines)
 
 
@@ -294,7 +295,7 @@ class _Output:
                     self._last_block = self._blocks + 1
 
 
-def measure(setup, entry=None, end="rti", instructions=300_000, chunk=CHUNK,
+def measure(setup, entry=None, end="rti", instructions=RATE, chunk=CHUNK,
             keyboard="", simulator=simh.PDP11, machine=True, timeout=600, vector=None):
     """Run `setup`, then `instructions` more instructions under CPU history, and
     price every execution of the code at `entry` (see the module's docstring).

@@ -23,10 +23,9 @@ from pathlib import Path
 
 import numpy as np
 
-HEADER = ("time_s", "axis", "dac", "vcmd", "vel", "pos", "counter")
-GRIPPER_COLUMNS = ("grip", "contact", "missed")
-HEADERS = (HEADER + GRIPPER_COLUMNS, HEADER)     # this build's, and older traces
-AXES = "XYZT"
+from harness.machine.plant_rows import AXES, AXIS_COLUMNS as HEADER, COLUMNS, GRIPPER_COLUMNS  # noqa: F401
+
+HEADERS = (COLUMNS, HEADER)     # this build's, and older traces (no gripper)
 DAC_ZERO = 2048          # offset binary: the code for 0 V
 
 
@@ -105,18 +104,19 @@ def _field(kind, text, check):
     return value if check(value) else None
 
 
-_COLUMNS = (  # column -> (type, range check, what it must be)
-    ("time_s", float, lambda v: v >= 0, "a time in seconds >= 0"),
-    ("axis", str, lambda v: v in AXES, "one of X Y Z T"),
-    ("dac", int, lambda v: 0 <= v <= 4095, "a DAC code 0..4095"),
-    ("vcmd", float, lambda v: True, "a number (counts/s)"),
-    ("vel", float, lambda v: True, "a number (counts/s)"),
-    ("pos", float, lambda v: True, "a number (counts)"),
-    ("counter", int, lambda v: -32768 <= v <= 32767, "a signed 16-bit count"),
-    ("grip", float, lambda v: 0 <= v <= 2, "an opening in inches, 0..2"),
-    ("contact", int, lambda v: v in (0, 1), "0 or 1"),
-    ("missed", int, lambda v: v >= 0, "a count >= 0"),
-)
+_CHECKS = {  # column -> (type, range check, what it must be)
+    "time_s": (float, lambda v: v >= 0, "a time in seconds >= 0"),
+    "axis": (str, lambda v: v in AXES, "one of " + " ".join(AXES)),
+    "dac": (int, lambda v: 0 <= v <= 4095, "a DAC code 0..4095"),
+    "vcmd": (float, lambda v: True, "a number (counts/s)"),
+    "vel": (float, lambda v: True, "a number (counts/s)"),
+    "pos": (float, lambda v: True, "a number (counts)"),
+    "counter": (int, lambda v: -32768 <= v <= 32767, "a signed 16-bit count"),
+    "grip": (float, lambda v: 0 <= v <= 2, "an opening in inches, 0..2"),
+    "contact": (int, lambda v: v in (0, 1), "0 or 1"),
+    "missed": (int, lambda v: v >= 0, "a count >= 0"),
+}
+_COLUMNS = tuple((column,) + _CHECKS[column] for column in COLUMNS)
 
 
 def parse_rows(lines, name="trace"):

@@ -5,19 +5,18 @@
 
 Features, per axis: final_pos, final_counter (the last row's), min_pos, max_pos,
 peak_speed (largest |vel|, counts/s), end_stop_rows (rows at or beyond PMIN or
-PMAX, the DESIGN.md section 3 defaults unless given); and duration (axis "-",
-simulated seconds of the last row).
+PMAX, the plant's power-up end stops unless given: SHOW PLANT LAYOUT); and
+duration (axis "-", simulated seconds of the last row).
 
 Expected-features file: one feature a line, "NAME AXIS VALUE TOLERANCE", the
 check being |measured - VALUE| <= TOLERANCE; '#' starts a comment.
-Pure logic.
+Pure logic, but for asking build/pdp11 its end stops (plant_rows.layout).
 """
 from dataclasses import dataclass
 
-from harness.analysis.trace import AXES
+from harness.machine import plant_rows
+from harness.machine.plant_rows import AXES
 
-# DESIGN.md section 3: travel from the power-up position, counts
-LIMITS = {"X": (-9600, 9600), "Y": (-7200, 7200), "Z": (-4000, 2400), "T": (-12000, 12000)}
 NAMES = ("final_pos", "final_counter", "min_pos", "max_pos", "peak_speed", "end_stop_rows")
 
 
@@ -34,7 +33,8 @@ class Expected:
     lineno: int
 
 
-def features(trace, limits=LIMITS):
+def features(trace, limits=None):
+    limits = limits or plant_rows.layout().stops
     found = {}
     last = 0.0
     for axis in AXES:

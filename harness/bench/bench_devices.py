@@ -16,14 +16,12 @@ Prints instructions per host second, the ratios to stock (goal >= 0.9) and the
 real-time factor (simulated seconds per wall second at RATE)."""
 import sys
 import time
-from pathlib import Path
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[2]))
+from harness.analysis.pdp11prog import Program, check_listing
+from harness.machine import simh
+from harness.machine.build import PDP11, PDP11_STOCK, RATE
+from harness.machine.plant_rows import AXES
 
-from harness.analysis.pdp11prog import Program, check_listing      # noqa: E402
-from harness.machine import simh                                  # noqa: E402
-
-RATE = 300000
 STEPS = 100_000_000                                       # 333 simulated seconds
 ROUNDS = 5
 SCRATCH = 0o3000
@@ -46,7 +44,7 @@ def program(io, clock=True):
     p.op(f"BR {outer:o}", 0o000400 | ((outer - p.here - 2) // 2 & 0o377))
 
     def servo(h):
-        for axis in range(4):
+        for axis in range(len(AXES)):
             h.mov_imm(axis, csr)
             h.op(f"MOV @#{inbuf:o},R1", 0o013701, inbuf)
             h.op("MOV #3634,R2", 0o012702, 0o3634)        # above 0: -100 codes
@@ -82,7 +80,7 @@ def best_rates(variants, rounds=ROUNDS):
 
 
 def main():
-    for sim in (simh.PDP11, simh.PDP11_STOCK):
+    for sim in (PDP11, PDP11_STOCK):
         if not sim.exists():
             sys.exit(f"bench: {sim} missing: run make")
     active, idle, stock = program(io=True), program(io=False), program(io=False, clock=False)
@@ -91,7 +89,7 @@ def main():
         if bad:
             sys.exit(f"bench: hand-assembled words disagree with SIMH: {bad}")
     ips_active, ips_idle, ips_stock = best_rates([
-        (active, simh.PDP11, "AAV11, X="), (idle, simh.PDP11, ""), (stock, simh.PDP11_STOCK, "")])
+        (active, PDP11, "AAV11, X="), (idle, PDP11, ""), (stock, PDP11_STOCK, "")])
     print(f"devices benchmark: {STEPS:,} instructions per run, best of {ROUNDS}, taking turns")
     print(f"  build/pdp11, clock + plant active : {ips_active / 1e6:8.2f} M instructions/s")
     print(f"  build/pdp11, clock, plant idle    : {ips_idle / 1e6:8.2f} M instructions/s")

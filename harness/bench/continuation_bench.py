@@ -6,17 +6,13 @@ the servo alone for comparison, no path running, along a path (a 4-inch square a
 changes included) and while the gripper steps; on the printed servo and on
 the corrected one (block 1030).
 """
-import shutil
 import sys
 import tempfile
-from pathlib import Path
 
 from harness.analysis import timing
 from harness.analysis.servo_timing import setup_script
-from harness.machine.robot import RATE
+from harness.machine.build import RATE, fresh_disk
 
-ROOT = Path(__file__).resolve().parents[2]
-DISK = ROOT / "build" / "robot.dsk"
 SQUARE = ("Path.Clear 3200 0 400 0 Via 3200 3200 400 0 Via 0 3200 400 0 Via "
           "0 0 400 0 Via 2400 Path.Run")
 CASES = [  # label, lines after the set-up, seconds measured
@@ -47,8 +43,7 @@ def main():
                             ("corrected servo, block 1030", "1000 LOAD 1030 LOAD 1040 LOAD")):
             print(f" {servo}")
             for k, (label, lines, seconds) in enumerate(CASES):
-                disk = Path(tmp) / f"bench{k}.dsk"
-                shutil.copy(DISK, disk)
+                disk = fresh_disk(tmp, f"bench{k}.dsk")
                 cost(disk, label, [load, "Set.Up.Robot Path.Servo"] + lines, seconds)
     return 0
 

@@ -6,7 +6,7 @@ SIMH's RL model answers after a fixed number of instructions (STIME per cylinder
 of seek, RTIME per transfer), so the figures are the driver's own cost, not the
 mechanical latency of a real RL02 (which would add tens of milliseconds).
 
-The write-through (pdp11-devices/rl_durable.c: fflush and fsync after every block
+The write-through (pdp11-devices/simh/rl_durable.c: fflush and fsync after every block
 written) costs no instruction, only host time: measured as the wall time of a
 FORTH loop writing WRITES blocks one FLUSH each, minus the same loop without
 UPDATE (no writes), per block; beside it, what one 1024-byte write plus fsync
@@ -17,8 +17,9 @@ import tempfile
 import time
 from pathlib import Path
 
-from harness.bench.forth_bench import RATE, count, start_counting
-from harness.machine.machine import ROOT, SIMULATOR, Machine, blank_disk
+from harness.bench.forth_bench import count, start_counting
+from harness.machine.build import RATE, ROOT
+from harness.machine.machine import SIMULATOR, Machine, blank_disk
 
 SETUP = r"""
 : B-HIT QUIET 1 BLOCK DROP MARK 1 BLOCK DROP END-MARK LOUD ;
@@ -60,7 +61,7 @@ def main():
     for name, n in rows:
         print(f"{name:45s} {n:14d} {1000 * n / RATE:9.2f}")
     flush = dict(rows)["FLUSH of one UPDATEd block (write)"]
-    print(f"\nFLUSH write-through (pdp11-devices/rl_durable.c), per block written:\n"
+    print(f"\nFLUSH write-through (pdp11-devices/simh/rl_durable.c), per block written:\n"
           f"  PDP-11 instructions {flush:10d}   (the write-through adds none)\n"
           f"  host microseconds   {write_us:10.1f}   (wall time of {WRITES} FLUSHed "
           "writes minus the same loop without them; fflush + fsync included)\n"

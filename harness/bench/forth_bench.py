@@ -7,15 +7,15 @@ difference is the work alone (plus MARK's own NEXT, measured by an empty pair
 and subtracted). Each runs at processor priority 6: the stock 11/23's line clock
 cannot be disabled and ticks at a host-calibrated rate, so its interrupts are held
 off to keep the counts exact. Simulated seconds use the 11/23's typical 300 000
-instructions per second (DESIGN.md section 2)."""
+instructions per second (docs/design.md section 2)."""
 import re
 import sys
 
 import pexpect
 
-from harness.machine.machine import OK, ROOT, SIMULATOR, Machine
+from harness.machine.build import RATE, ROOT
+from harness.machine.machine import OK, SIMULATOR, Machine
 
-RATE = 300_000
 
 # the counting words: breakpoints go on MARK and END-MARK; QUIET/LOUD hold the
 # clock's interrupts off; B-EMPTY measures the pair itself

@@ -20,8 +20,8 @@ from pathlib import Path
 
 from harness.bench import lab_workload as workload
 from harness.lab.launch import LabProcess, have_browser, headless_browser
+from harness.machine.build import RATE
 
-RATE = 300_000
 WINDOW_S = 10.0
 DEVICE_ONLY = "attach lab /dev/null\nset lab speed=0\n"
 

@@ -10,16 +10,15 @@ interrupts included.
 """
 import os
 import re
-import shutil
 import time
 from dataclasses import dataclass
 from pathlib import Path
 
 from harness.machine import simh
-from harness.machine.console_session import IDLE, KERNEL
+from harness.machine.build import KERNEL, fresh_disk
+from harness.machine.console_session import IDLE
 from harness.machine.machine import Machine
 
-ROOT = Path(__file__).resolve().parents[2]
 SETUP = ("1000 LOAD", "Set.Up.Robot", "800 800 400 0 Abs.Move")
 DEFINE = ": BENCH.SPIN ( n -- ) 0 DO 10000 0 DO LOOP LOOP ;"
 WORK = "3000 BENCH.SPIN"          # 30 million empty LOOPs: a few host seconds
@@ -60,17 +59,11 @@ def best(runs):
     return min(runs, key=lambda r: r.wall)
 
 
-def fresh_disk(tmp, name="bench"):
-    disk = Path(tmp) / f"{name}.dsk"
-    shutil.copyfile(ROOT / "build" / "robot.dsk", disk)
-    return disk
-
-
 def instructions(tmp):
     """The instructions WORK takes, from two batch runs (see the docstring)."""
     def halted_at(lines):
         keys = "\r".join(SETUP + (DEFINE,) + lines + ("(BYE)",)) + "\r"
-        out = simh.run(f"attach rl0 {fresh_disk(tmp)}\nload {KERNEL}\ngo\nshow time\n",
+        out = simh.run(f"attach rl0 {fresh_disk(tmp, 'bench.dsk')}\nload {KERNEL}\ngo\nshow time\n",
                        keyboard=keys, timeout=600)
         found = SIM_TIME.findall(out)
         if "BENCH.SPIN" not in out or not found:
@@ -86,7 +79,7 @@ class Bare:
     defined."""
 
     def __init__(self, tmp, name, extra=""):
-        self.machine = Machine(disk=fresh_disk(tmp, name), timeout=600,
+        self.machine = Machine(disk=fresh_disk(tmp, f"{name}.dsk"), timeout=600,
                                extra_commands=f"{IDLE}\n{extra}")
         for line in SETUP + (DEFINE,):
             self.machine.send(line)

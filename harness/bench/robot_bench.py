@@ -3,23 +3,20 @@
 
 - Interrupt.Servo per 60 Hz tick: every instruction it executes, from the
   interrupt entry to its RTI, priced with the KDF11-A tables (harness/analysis/kdf11.py,
-  from shared/kdf11-timing.md: basic + source + destination time per
+  from docs/kdf11-timing.md: basic + source + destination time per
   instruction, DEC's KDF11-A timing tables), through harness/timing.measure
   on SIMH's CPU history; idle (no command pending, the axes hunting around
   their targets) and during a move.
 - 1000 LOAD: simulated 11/23 seconds (instructions / 300 000) and host time.
 """
-import shutil
 import sys
 import tempfile
 import time
-from pathlib import Path
 
 from harness.analysis import servo_timing
-from harness.machine.robot import RATE, Robot
+from harness.machine.build import RATE, fresh_disk
+from harness.machine.robot import Robot
 
-ROOT = Path(__file__).resolve().parents[2]
-DISK = ROOT / "build" / "robot.dsk"
 
 
 def load_time(disk):
@@ -33,15 +30,14 @@ def load_time(disk):
 
 
 def main():
-    print("==> robot servo benchmark (KDF11-A prices: shared/kdf11-timing.md)")
+    print("==> robot servo benchmark (KDF11-A prices: docs/kdf11-timing.md)")
     for case in servo_timing.CASES:
         label, report = servo_timing.measure(case)
         if "-v" in sys.argv:
             print(report.format("Interrupt.Servo"))
         print(servo_timing.summary(label, report))
     with tempfile.TemporaryDirectory() as tmp:
-        disk = Path(tmp) / "load.dsk"
-        shutil.copy(DISK, disk)
+        disk = fresh_disk(tmp, "load.dsk")
         load_time(disk)
     return 0
 

@@ -16,7 +16,8 @@ from pathlib import Path
 
 import pexpect
 
-from harness.commands import regression
+from harness.analysis import regression
+from harness.machine.build import PDP11, ROOT, fresh_disk
 from harness.machine.script import parse
 from harness.machine.script_run import run_steps
 from harness.machine.scripted_machine import ScriptedMachine
@@ -46,16 +47,14 @@ def whole_suite():
 
 def real_time_factor():
     with tempfile.TemporaryDirectory() as tmp:
-        disk = Path(tmp) / "robot.dsk"
-        disk.write_bytes(regression.ROOT.joinpath("build", "robot.dsk").read_bytes())
-        with ScriptedMachine("robot.dsk", cwd=tmp) as m:
+        with ScriptedMachine(fresh_disk(tmp).name, cwd=tmp) as m:
             wall, _ = timed(lambda: run_steps(m, parse(f"#wait {IDLE_SECONDS}")))
     return IDLE_SECONDS / wall
 
 
 def command_line_scenario(tries=5):
     command = [sys.executable, "-m", "harness", "regress", "boot"]
-    return min(timed(lambda: subprocess.run(command, cwd=regression.ROOT, check=True,
+    return min(timed(lambda: subprocess.run(command, cwd=ROOT, check=True,
                                             capture_output=True))[0] for _ in range(tries))
 
 
@@ -69,11 +68,10 @@ def idle_console_share(seconds=3.0, line=None):
     it, after `line` (e.g. the blocks loaded and the servo running) if given."""
     from harness.machine.console_session import boot_script
     with tempfile.TemporaryDirectory() as tmp:
-        disk = Path(tmp) / "robot.dsk"
-        disk.write_bytes(regression.ROOT.joinpath("build", "robot.dsk").read_bytes())
+        disk = fresh_disk(tmp)
         ini = Path(tmp) / "console.ini"
         ini.write_text(boot_script(disk, fast=True))
-        child = pexpect.spawn(str(regression.ROOT / "build" / "pdp11"), [str(ini)],
+        child = pexpect.spawn(str(PDP11), [str(ini)],
                               timeout=30)
         try:
             child.expect(b" ok\r\n")
@@ -91,7 +89,7 @@ def idle_console_share(seconds=3.0, line=None):
 def test_suite():
     command = ["make", "--no-print-directory", "test"]
     env = {k: v for k, v in os.environ.items() if k not in ("MAKEFLAGS", "MFLAGS")}
-    return timed(lambda: subprocess.run(command, cwd=regression.ROOT, env=env,
+    return timed(lambda: subprocess.run(command, cwd=ROOT, env=env,
                                         capture_output=True))
 
 

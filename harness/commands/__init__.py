@@ -1,6 +1,7 @@
 """Subcommands of `python -m harness`, one module each (registered in harness/cli.py),
 and their helpers: argtypes (option types), invoke (running a command with its
-input errors reported), regression (the scenarios that `regress` runs through `run`).
+input errors reported).
 
-Imports the tools (harness.analysis, harness.lab, harness.asmcheck), harness.machine
-and harness.blocks; only harness/cli.py and the benches import it (harness/README.md)."""
+Imports the tools (harness.analysis, harness.lab), harness.machine and
+harness.blocks; only harness/cli.py and the top floor (bench, fuzz, soak,
+figures) import it (harness/README.md)."""

@@ -6,11 +6,8 @@ from pathlib import Path
 from harness.blocks.disk import DiskError, check_image
 from harness.commands.argtypes import positive
 from harness.machine.console_session import BUSY_WAIT, HINT, RACK_HINT, session
-from harness.machine.simh import PDP11
+from harness.machine.build import PDP11, PRISTINE_DISK as PRISTINE, WORKING_DISK as WORK_DISK
 
-ROOT = Path(__file__).resolve().parents[2]
-WORK_DISK = ROOT / "local" / "robot.dsk"
-PRISTINE = ROOT / "build" / "robot.dsk"
 
 
 class ConsoleError(RuntimeError):

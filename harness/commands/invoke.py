@@ -1,9 +1,6 @@
-"""Running one subcommand with the user's input errors reported as messages.
-
-Shared by harness/cli.py and the regression scenarios (harness/commands/regression.py),
-which run the `run` command in process through its own module, not through the
-command line's registry (so regress -> regression -> run, and no circle back
-through cli)."""
+"""Running one subcommand with the user's input errors reported as messages
+(harness/cli.py; the regression scenarios call the run engine,
+harness.machine.script_run.run_file, directly)."""
 import sys
 
 PROG = "python -m harness"

@@ -7,10 +7,10 @@ from pathlib import Path
 from harness.blocks.disk import DiskError
 from harness.commands.console import ConsoleError, working_disk
 from harness.lab.server import NODE_MODULES, serve
-from harness.machine.scripted_machine import KERNEL_MAP, read_kernel_map
-from harness.machine.simh import PDP11
+from harness.machine.build import KERNEL_MAP, PDP11
+from harness.machine.kernel_layout import KernelMapError, read_kernel_map
 
-ERRORS = (ConsoleError, DiskError)
+ERRORS = (ConsoleError, DiskError, KernelMapError)
 
 DESCRIPTION = """\
 The lab bench: the FORTH console, the robot, a scope and the servo in a browser page.

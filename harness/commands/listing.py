@@ -8,8 +8,9 @@ from pathlib import Path
 from harness.analysis.listing import (PRISTINE, ListingError, format_ranges, listable_blocks,
                                       make_listing)
 from harness.machine import simh
+from harness.machine.kernel_layout import KernelMapError
 
-ERRORS = (ListingError, simh.SimhError)
+ERRORS = (ListingError, simh.SimhError, KernelMapError)
 
 DESCRIPTION = """\
 List blocks beside the addresses and words each line compiled or assembled.

@@ -84,7 +84,7 @@ def configure(parser):
                         help="which figure (default all). moves: one per axis that has "
                         "moves (with --axis, each axis named must have one)")
     parser.add_argument("--axis", type=axis_letters, metavar="AXES",
-                        help="axes to draw, letters from XYZT (default: every axis "
+                        help=f"axes to draw, letters from {AXES} (default: every axis "
                         "in the trace; for moves, every axis that has moves)")
     parser.add_argument("--window", type=window, action="append", default=[],
                         metavar="START:END", help="simulated seconds; repeatable. "

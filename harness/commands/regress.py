@@ -3,8 +3,9 @@ import argparse
 
 from harness.analysis.trace_features import FeatureError
 from harness.blocks.disk import DiskError
-from harness.commands import regression
-from harness.commands.run import PRISTINE, check_start_image
+from harness.analysis import regression
+from harness.machine.build import PRISTINE_DISK
+from harness.machine.script_run import check_start_image
 
 ERRORS = (ValueError, FeatureError, DiskError)
 
@@ -33,5 +34,5 @@ def configure(parser):
 
 def run(args):
     """Every scenario boots a copy of build/robot.dsk: check it once, before any."""
-    check_start_image(PRISTINE)
+    check_start_image(PRISTINE_DISK)
     return regression.main(args.names, args.update)

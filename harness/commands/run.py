@@ -1,19 +1,12 @@
 """`run SCRIPT`: a scripted, deterministic console session (docs/console.md)."""
 import argparse
-import shutil
 import sys
-import tempfile
 from pathlib import Path
 
-from harness.blocks.disk import DiskError, check_image, write_atomic
 from harness.commands.argtypes import positive
-from harness.machine import script
-from harness.machine.script_run import run_steps
-from harness.machine.scripted_machine import KERNEL, ScriptError, ScriptedMachine
-from harness.machine.simh import PDP11, SimhError
-
-ERRORS = (script.ScriptSyntaxError, ScriptError, SimhError, DiskError)
-PRISTINE = Path(__file__).resolve().parents[2] / "build" / "robot.dsk"
+from harness.machine.build import KERNEL, PDP11, PRISTINE_DISK
+from harness.machine.script_run import ERRORS, run_file  # noqa: F401 (ERRORS: cli reports them)
+from harness.machine.scripted_machine import ScriptError
 
 DESCRIPTION = """\
 Boot the FORTH on the robot's PDP-11/23 from a fresh copy of the disk image
@@ -45,7 +38,7 @@ def configure(parser):
                         help="transcript file (default: DIR/NAME.transcript)")
     parser.add_argument("--trace", metavar="FILE",
                         help="plant trace file (default: DIR/NAME.trace.csv)")
-    parser.add_argument("--disk", metavar="IMAGE", default=str(PRISTINE),
+    parser.add_argument("--disk", metavar="IMAGE", default=str(PRISTINE_DISK),
                         help="disk image to start from, copied and never changed "
                         "(default: build/robot.dsk)")
     parser.add_argument("--keep-going", action="store_true",
@@ -69,47 +62,14 @@ def output_paths(args):
             Path(args.trace) if args.trace else out / f"{stem}.trace.csv")
 
 
-def _check_writable(path):
-    parent = path.parent
-    if not parent.is_dir():
-        raise ScriptError(f"{parent}: no such directory for {path.name} (output "
-                          "directories must exist, as for plot)")
-    if path.is_dir():
-        raise ScriptError(f"{path}: is a directory, not a file to write")
-
-
-def check_start_image(disk):
-    """The image a run starts from is only read (each run boots a copy): it must be
-    there, readable and RL02-sized (harness.blocks.disk.check_image); DiskError if not."""
-    if disk == PRISTINE and not disk.exists():
-        raise DiskError(f"{disk}: no such disk image (run make)")
-    check_image(disk, writable=False)
-
-
 def run(args):
-    steps = script.read(args.script)
     transcript_path, trace_path = output_paths(args)
     if args.out and Path(args.out).exists() and not Path(args.out).is_dir():
         raise ScriptError(f"--out {args.out}: not a directory (--out names the directory "
                           "for both outputs; --transcript and --trace name files)")
-    for path in (transcript_path, trace_path):
-        _check_writable(path)
-    disk = Path(args.disk)
-    check_start_image(disk)
-    with tempfile.TemporaryDirectory(prefix="harness-run-") as tmp:
-        try:
-            shutil.copyfile(disk, Path(tmp) / "robot.dsk")
-        except OSError as e:
-            raise ScriptError(f"{disk}: cannot copy the disk image: {e.strerror}") from e
-        check_image(Path(tmp) / "robot.dsk")         # the copy the machine changes
-        with ScriptedMachine("robot.dsk", trace="trace.csv", cwd=tmp,
-                             simulator=args.simulator, line_limit=args.line_limit,
-                             kernel=Path(args.kernel),
-                             kernel_map=Path(args.kernel).with_suffix(".map")) as m:
-            result = run_steps(m, steps, keep_going=args.keep_going)
-        trace = (Path(tmp) / "trace.csv").read_bytes()
-    write_atomic(transcript_path, result.transcript.encode("latin-1"))
-    write_atomic(trace_path, trace)
+    steps, result = run_file(args.script, transcript_path, trace_path, disk=args.disk,
+                             keep_going=args.keep_going, line_limit=args.line_limit,
+                             kernel=args.kernel, simulator=args.simulator)
     for failure in result.failures:
         print(failure.where(args.script), file=sys.stderr)
     forth_lines = sum(1 for s in steps if s.kind == "forth")

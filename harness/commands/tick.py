@@ -1,17 +1,15 @@
 """`tick`: walk the 1983 servo one 60 Hz tick at a time (harness/analysis/tick_view.py)."""
 import argparse
-import shutil
 import sys
 import tempfile
-from pathlib import Path
 
 from harness.analysis.tick_view import SETUP, WATCH, open_view
 from harness.commands.argtypes import count
 from harness.machine.machine import ForthError, MachineHalted
+from harness.machine.build import fresh_disk
 from harness.machine.scripted_machine import ScriptError
 
 ERRORS = (ForthError, MachineHalted, ScriptError, RuntimeError)
-PRISTINE = Path(__file__).resolve().parents[2] / "build" / "robot.dsk"
 
 DESCRIPTION = f"""\
 Boot the FORTH on a fresh copy of build/robot.dsk, type the set-up lines
@@ -45,8 +43,7 @@ def configure(parser):
 def run(args):
     interactive = args.ticks is None and sys.stdin.isatty()
     with tempfile.TemporaryDirectory(prefix="tick-") as tmp:
-        disk = Path(tmp) / "robot.dsk"
-        shutil.copyfile(PRISTINE, disk)
+        disk = fresh_disk(tmp)
         robot, view = open_view(disk, args.setup or SETUP, args.line or WATCH)
         with robot:
             for n in range(args.ticks or (1 if not interactive else 10**9)):

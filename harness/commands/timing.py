@@ -6,6 +6,7 @@ from harness.analysis import servo_timing
 from harness.analysis.timing import CHUNK, TimingError, measure
 from harness.commands.argtypes import count
 from harness.machine import simh
+from harness.machine.build import RATE
 
 ERRORS = (TimingError, simh.SimhError)
 
@@ -19,7 +20,7 @@ execution of the instruction at --end. Prints executions, microseconds per execu
 60 Hz tick (with the tick's percentage), and a per-instruction breakdown.
 
 Times: DEC KDF11-B User's Guide tables B-4..B-7 (memory management off), as
-in shared/kdf11-timing.md; an interrupt entry is charged 9.375 us, an estimate
+in docs/kdf11-timing.md; an interrupt entry is charged 9.375 us, an estimate
 (IOT's trap sequence), as the tables give none.
 
 Example: the code that vector 100 (the 60 Hz clock) runs, over 2 simulated s:
@@ -61,8 +62,8 @@ def configure(parser):
     parser.add_argument("--end", type=end_condition, default="rti", metavar="rti|ADDR",
                         help="an execution ends with its RTI (default) or with the first "
                         "execution of the instruction at this octal address")
-    parser.add_argument("--instructions", type=count, default=300_000, metavar="N",
-                        help="instructions to run after SETUP (default 300000: one "
+    parser.add_argument("--instructions", type=count, default=RATE, metavar="N",
+                        help=f"instructions to run after SETUP (default {RATE}: one "
                         "simulated second at the default RATE)")
     parser.add_argument("--keyboard", metavar="FILE",
                         help="text the console keyboard receives (default none)")

@@ -1,14 +1,11 @@
 """Find FORTH words' bodies in a copy of the machine's memory (pure logic).
 
-The header layout is forth/README.md's: LFA (link to the previous header of the
-same chain), the count byte (bit 5 SMUDGE, bits 4-0 length), the name padded to
-an even address, the 4-byte code field, the body. A vocabulary's body holds the
-newest LFA of each of its four chains (names by length mod 4). CREATE, VAR and
-ARRAY words (JSR R,@#DOVAR) keep their values in the body.
+The header layout is harness.machine.kernel_layout's; a vocabulary's body holds
+the newest LFA of each of its four chains (names by length mod 4). CREATE, VAR
+and ARRAY words keep their values in the body.
 """
-CODE_FIELD = 4
-SMUDGE, LENGTH = 0o40, 0o37
-CHAINS = 4
+from harness.machine.kernel_layout import CHAINS, LENGTH, SMUDGE, body_of
+
 MAX_HEADERS = 20000            # a broken chain must not loop for ever
 
 
@@ -39,12 +36,6 @@ def header_name(memory, lfa):
     if None in chars:
         return None, 0
     return bytes(chars).decode("latin-1"), count
-
-
-def body_of(lfa, length):
-    """The body address of a header whose name has `length` characters."""
-    code_field = (lfa + 3 + length + 1) & ~1
-    return code_field + CODE_FIELD
 
 
 def find_bodies(memory, vocabulary_body, names):

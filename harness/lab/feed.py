@@ -1,12 +1,11 @@
-"""The LAB device's live stream (pdp11-devices/lab.c), parsed as it arrives (pure
+"""The LAB device's live stream (pdp11-devices/lab/lab.c), parsed as it arrives (pure
 logic). Tagged rows: W (watched words at a tick), P (the plant: one axis, the
 plant trace's columns), A (watched addresses), S (state), M (memory dump),
 E (a refused command).
 """
 from dataclasses import dataclass
 
-AXES = "XYZT"
-PLANT_COLUMNS = ("time_s", "axis", "dac", "vcmd", "vel", "pos", "counter")
+from harness.machine.plant_rows import AXES, AXIS, COLUMNS
 
 
 class Lines:
@@ -22,13 +21,14 @@ class Lines:
 
 
 def plant_row(row):
-    """A P row -> [time_s, axis index, dac, vcmd, vel, pos, counter], the plant
-    trace's columns in its order; columns after these are ignored, so the row
-    may grow (a gripper, say). None when unreadable."""
+    """A P row (the plant's row, plant_rows.COLUMNS) -> its numbers in that order,
+    the axis as its index in AXES; columns after these are ignored, so the row
+    may grow. None when unreadable."""
+    if len(row.fields) < len(COLUMNS):
+        return None
     try:
-        t, axis, dac, vcmd, vel, pos, counter = row.fields[:len(PLANT_COLUMNS)]
-        return [float(t), AXES.index(axis), int(dac), float(vcmd), float(vel), float(pos),
-                int(counter)]
+        return [AXES.index(text) if k == AXIS else float(text)
+                for k, text in enumerate(row.fields[:len(COLUMNS)])]
     except ValueError:
         return None
 
@@ -62,7 +62,7 @@ def thin(rows, budget):
     if len(rows) <= budget:
         return rows
     k = -(-len(rows) // budget)
-    seen = [0, 0, 0, 0]
+    seen = [0] * len(AXES)
     kept = []
     for row in rows:
         axis = row[1]

@@ -1,14 +1,14 @@
 """Start a lab as a user would, in its own process, and a headless Chromium to look
 at it: shared by the lab's tests and its benchmark."""
 import re
-import shutil
 import signal
 import subprocess
 import sys
 import time
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[2]
+from harness.machine.build import ROOT, fresh_disk
+
 CHROMIUM, CHROMEDRIVER = Path("/usr/bin/chromium"), Path("/usr/bin/chromedriver")
 URL = re.compile(r"http://127\.0\.0\.1:(\d+)/\?token=(\S+)")
 
@@ -17,8 +17,7 @@ class LabProcess:
     """`python -m harness lab` on a copy of the pristine disk, on a free port."""
 
     def __init__(self, tmp, speed="full"):
-        disk = Path(tmp) / "robot.dsk"
-        shutil.copyfile(ROOT / "build" / "robot.dsk", disk)
+        disk = fresh_disk(tmp)
         self.log = Path(tmp) / "lab.log"
         with open(self.log, "w") as log:
             self.proc = subprocess.Popen(

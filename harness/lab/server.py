@@ -17,11 +17,11 @@ from harness.lab import guard, shell_terminal
 from harness.lab.feed import plant_row, thin, words_of
 from harness.lab.servo_watch import PER_AXIS, SINGLE, ServoWatch
 from harness.lab.session import SPEEDS, Simulator
+from harness.machine.build import BUILD
 from harness.machine.console_session import quiet_stdout
 
-ROOT = Path(__file__).resolve().parents[2]
 STATIC = Path(__file__).resolve().parent / "static"
-NODE_MODULES = ROOT / "build" / "lab" / "node_modules"
+NODE_MODULES = BUILD / "lab" / "node_modules"
 VENDOR = {  # URL name -> file installed by `npm ci` (mk/lab.mk)
     "xterm.js": "@xterm/xterm/lib/xterm.js",
     "xterm.css": "@xterm/xterm/css/xterm.css",
@@ -99,7 +99,7 @@ class Lab:
                 asyncio.ensure_future(ws.send_str(text))
 
     def hello(self):
-        return {"t": "hello", "stops": self.sim.stops,
+        return {"t": "hello", "stops": self.sim.stops, "plant": self.sim.plant.message(),
                 "per_axis": PER_AXIS, "single": SINGLE, "status": self.status,
                 "con": self.scrollback.decode("latin-1")}
 

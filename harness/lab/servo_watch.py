@@ -9,9 +9,10 @@ heads and DP (HERE). When they change (a LOAD, a FORGET) it dumps the dictionary
 finds the servo's words (block 1000's arrays and Dir, defined above the kernel's FENCE) and watches their cells.
 """
 from harness.lab.dictionary import Memory, find_bodies
+from harness.machine.kernel_layout import BODY, CHAINS
+from harness.machine.plant_rows import AXES
 
 ORIGIN = 0o2000                      # the kernel and the dictionary start here
-BODY = 4                             # a kernel VAR's value follows its code field
 PER_AXIS = ("Desire.Pos", "State", "Velocity", "0-Vel", "Command.Status", "MaxVel")
 SINGLE = ("Dir", "Trial.No", "Steps", "Z.Was", "Late")
 DUMPED = {"Weights": 72}             # the ASN's 4 x 18 weights (docs/learning.md)
@@ -40,7 +41,7 @@ class ServoWatch:
                                           for name, n in DUMPED.items() if name in self.found]
 
     def _state(self):
-        return tuple(self.memory.word(self.vocabulary + 2 * i) for i in range(4)) + (
+        return tuple(self.memory.word(self.vocabulary + 2 * i) for i in range(CHAINS)) + (
             self.memory.word(self.fence), self.memory.word(self.dp))
 
     def on_memory(self, address, words):
@@ -69,7 +70,7 @@ class ServoWatch:
         layout, addresses = [], []
         for name in PER_AXIS:
             if name in self.found:
-                for axis in range(4):
+                for axis in range(len(AXES)):
                     layout.append((name, axis))
                     addresses.append(self.found[name] + 2 * axis)
         for name in SINGLE:

@@ -1,6 +1,6 @@
 """The simulator behind the lab page: SIMH on a pty, and the LAB device's stream.
 
-The machine boots as in `make run`, with the LAB device (pdp11-devices/lab.c)
+The machine boots as in `make run`, with the LAB device (pdp11-devices/lab/lab.c)
 attached to a FIFO in a private temporary directory; a second FIFO carries the
 lab's commands (speed, pause, step, watch, dump) to the device. Everything is
 read on the asyncio loop, so the simulator never waits long for a reader.
@@ -9,7 +9,6 @@ detach, quit (harness/machine/console_session.py).
 """
 import asyncio
 import os
-import re
 import sys
 import tempfile
 from pathlib import Path
@@ -17,26 +16,13 @@ from pathlib import Path
 import pexpect
 
 from harness.lab.feed import Lines, lab_row
-from harness.machine import simh
-from harness.machine.console_session import KERNEL, RACK_OFF, leave, say
+from harness.machine import plant_rows, simh
+from harness.machine.build import KERNEL, ROOT
+from harness.machine.console_session import RACK_OFF, leave, say
 from harness.machine.console_watch import Leave, LineWatcher
-from harness.machine.simh import ROOT
 
 SPEEDS = {"real": 1, "x10": 10, "full": 0}
-STOPS = re.compile(rb"^\s+([XYZT])\s+\S+\s+\S+\s+\S+\s+\S+\s+(-?[\d.]+)\s+(-?[\d.]+)\s+\S+\s*$",
-                   re.M)
 READ_CHUNK = 1 << 16
-
-
-def end_stops(text):
-    """{axis letter: (pmin, pmax)} from SHOW PLANT's parameter table."""
-    return {m.group(1).decode(): (float(m.group(2)), float(m.group(3)))
-            for m in STOPS.finditer(text)}
-
-
-def plant_stops(simulator):
-    """The end stops the plant powers up with (the lab's machine starts so)."""
-    return end_stops(simh.run("show plant\n", simulator=simulator, timeout=30).encode())
 
 
 def boot_script(disk, lab_fifo, speed, kernel=KERNEL):
@@ -59,7 +45,8 @@ class Simulator:
         self.child = None
         self.fds = {}
         self.leaving = False
-        self.stops = plant_stops(simulator)
+        self.plant = plant_rows.layout(simulator)     # the lab's machine starts so
+        self.stops = self.plant.stops
 
     def start(self):
         loop = asyncio.get_running_loop()

@@ -7,10 +7,10 @@ build/kernel.map gives their code fields; the data start 4 bytes on (>BODY).
 SIMH's EXAMINE prints them as "address:<tab>octal" lines. Pure logic apart from
 `examine`, which the caller supplies (one SIMH command -> its output).
 """
+from harness.machine.kernel_layout import BODY
 from harness.machine.simh import examined_all
 
 BUFS = 4                      # forth/kernel/disk.fs #BUFS: its tables have 4 cells
-BODY = 4                      # code field (JSR W,@#DOVAR) to data: >BODY
 
 
 def table_command(symbols, name):

@@ -35,14 +35,3 @@ class HaltWatcher:
         self.tail = b""
         return data + self.hint(m.group(1).decode("latin-1"), m.group(2).decode())
 
-
-def kernel_entry(kernel_map):
-    """ENTRY's address from build/kernel.map, or None."""
-    try:
-        for line in open(kernel_map):
-            parts = line.split()
-            if len(parts) == 2 and parts[1] == "ENTRY":
-                return int(parts[0], 8)
-    except OSError:
-        pass
-    return None

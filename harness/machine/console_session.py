@@ -23,17 +23,17 @@ import pexpect
 
 from harness.blocks.disk import block_ranges
 from harness.machine import block_buffers, pty_child
-from harness.machine.console_halt import HaltWatcher, kernel_entry
+from harness.machine import kernel_layout, simh
+from harness.machine.build import KERNEL
+from harness.machine.console_halt import HaltWatcher
 from harness.machine.console_watch import Leave, LineWatcher
-from harness.machine.scripted_machine import ScriptError, read_kernel_map
-from harness.machine import simh
-from harness.machine.simh import KERNEL
+from harness.machine.kernel_layout import KernelMapError, read_kernel_map
 
 # the 11/23's pace (CLK RATE, 300K instructions/s) from the first instruction; SIMH's
-# SET THROTTLE cannot pace the kernel's WAIT (pdp11-devices/kw11l.c)
+# SET THROTTLE cannot pace the kernel's WAIT (pdp11-devices/bus/kw11l.c)
 REALTIME = "set clk realtime"
 # --fast: full speed while the FORTH works; while KEY WAITs the KW11-L sleeps the
-# host at the 11/23's pace (pdp11-devices/kw11l.c), so an idle prompt costs little
+# host at the 11/23's pace (pdp11-devices/bus/kw11l.c), so an idle prompt costs little
 IDLE = "set cpu idle"
 # The amplifier rack starts switched off, as the lab's operator left it: the axes
 # stand still (z's brake on) however long the blocks take to load or the user
@@ -124,7 +124,7 @@ def bye_halt(kernel=KERNEL):
     """What SIMH prints when the kernel's BYE word halts at (BYE), or None."""
     try:
         bye = read_kernel_map(Path(kernel).with_suffix(".map")).get("(BYE)")
-    except ScriptError:
+    except KernelMapError:
         return None
     return None if bye is None else b"HALT instruction, PC: %06o" % (bye + 2)
 
@@ -175,7 +175,7 @@ def _simh(child, command):
 def _unwritten(child, kernel):
     try:
         symbols = read_kernel_map(Path(kernel).with_suffix(".map"))
-    except ScriptError:
+    except KernelMapError:
         return None
     return block_buffers.read_unwritten(symbols, lambda command: _simh(child, command))
 
@@ -264,7 +264,7 @@ def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BU
         watcher = LineWatcher(bye_halt(kernel))
         hangup = signal.signal(signal.SIGHUP, _on_hangup)
         try:
-            halts = HaltWatcher(kernel, kernel_entry(Path(kernel).with_suffix(".map")) or 0)
+            halts = HaltWatcher(kernel, kernel_layout.entry(Path(kernel).with_suffix(".map")) or 0)
             _interact(child, _typed(watcher), lambda data: halts.feed(watcher.output(data)))
         except Leave as way:
             signal.signal(signal.SIGHUP, signal.SIG_IGN)     # leaving: no second hangup

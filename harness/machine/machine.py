@@ -1,4 +1,6 @@
-"""Drive the emulated PDP-11/23 running the FORTH kernel, through a pty.
+"""The FORTH on build/pdp11 through a pty, a line at a time as a user types it
+(each line lands when the host writes it; scripted_machine.py is the lock-step,
+deterministic driver).
 
     with Machine(disk=path) as m:      # boots to the FORTH prompt
         m.send("1 2 + .")              # -> "3 "   (raises ForthError on an error)
@@ -7,10 +9,8 @@
 Flow control: a line is sent only after the previous one was answered (" ok",
 " compiled" while a definition is open, or "Error: ..."), and the answer is
 awaited with pexpect (no sleeps). A simulator halt (the sim> prompt) or EOF raises MachineHalted; a missing answer raises
-TimeoutError. The simulator binary is one setting: SIMULATOR below, or the
-environment variable PDP11_SIM (make passes it from its PDP11_SIM variable).
+TimeoutError. The simulator is harness.machine.build's PDP11 (PDP11_SIM honoured).
 """
-import os
 import re
 import tempfile
 from dataclasses import dataclass
@@ -20,9 +20,9 @@ import pexpect
 
 from harness.blocks.disk import RL02_BYTES
 from harness.machine import pty_child
-from harness.machine.simh import KERNEL, ROOT, boot_script
-
-SIMULATOR = ROOT / os.environ.get("PDP11_SIM", "build/pdp11")
+from harness.machine.build import KERNEL, ROOT  # noqa: F401
+from harness.machine.build import PDP11 as SIMULATOR
+from harness.machine.simh import boot_script
 
 OK = re.compile(r" (?:ok|compiled)\r\n")   # compiled: a definition or structure is open
 ERROR = re.compile(r"\r\nError: ([^\r\n]*)\r\n")

@@ -13,45 +13,14 @@ trace), with a FORTH-line interface:
 """
 import re
 
-from harness.machine.machine import KERNEL, ForthError, MachineHalted
-from harness.machine.scripted_machine import KERNEL_MAP as MAP, ScriptedMachine
-from harness.machine.simh import PDP11
-
-RATE = 300_000                      # instructions per simulated second (CLK RATE default)
-AXES = "XYZT"
-
+from harness.machine.build import KERNEL, PDP11
+from harness.machine.plant_rows import parse_show_gripper, parse_show_plant
+from harness.machine.machine import ForthError, MachineHalted
+from harness.machine.scripted_machine import ScriptedMachine
 
 def numbers(text):
     """The integers a FORTH line printed."""
     return [int(w) for w in text.split()]
-
-
-def parse_show_plant(text):
-    """SHOW PLANT's per-axis rows -> {axis: {pos, vel, dac, vcmd, offset, stop, run, counter}}."""
-    axes = {}
-    for line in text.splitlines():
-        f = line.split()
-        if len(f) == 11 and f[0] in AXES and f[3] in ("in", "deg"):
-            axes[f[0]] = dict(pos=float(f[1]), vel=float(f[4]), dac=int(f[5]),
-                              vcmd=float(f[6]), offset=float(f[7]), stop=f[8],
-                              run=int(f[9]), counter=int(f[10]))
-    if set(axes) != set(AXES):
-        raise ValueError(f"SHOW PLANT output not understood: {text!r}")
-    return axes
-
-
-def parse_show_gripper(text):
-    """SHOW PLANT's (last) gripper line -> {opening (in), steps, object (in),
-    contact, pulses, missed, blocked, part}: part is None, or (x, y, z) in
-    counts where a placed part is."""
-    lines = [ln for ln in text.splitlines() if ln.strip().startswith("gripper ")]
-    if not lines:
-        raise ValueError(f"no gripper line in SHOW PLANT's output: {text[-200:]!r}")
-    line, _, part = lines[-1].partition(", part at ")
-    f = line.replace(",", " ").replace("(", " ").split()
-    return dict(opening=float(f[2]), steps=int(f[4]), object=float(f[7]), contact=int(f[10]),
-                pulses=int(f[12]), missed=int(f[14]), blocked=int(f[16]),
-                part=tuple(float(v) for v in part.split()[:3]) if part else None)
 
 
 class Robot(ScriptedMachine):

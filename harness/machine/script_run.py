@@ -4,10 +4,24 @@ The transcript is what the terminal showed: the boot banner, each line's echo
 and answer, and for #simh steps the SIMH prompt, command and output; #wait adds
 only what the machine printed meanwhile. Line ends are LF. It holds no host
 path and no host time, so two runs of a script give the same bytes.
-"""
-from dataclasses import dataclass, field
 
-from harness.machine.scripted_machine import ScriptError
+run_file() is the whole of a scripted run (the `run` command and the regression
+scenarios call it): a fresh copy of the disk, the machine, the steps, the
+transcript and the plant trace written whole.
+"""
+import tempfile
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from harness.blocks.disk import DiskError, check_image, write_atomic
+from harness.machine import script
+from harness.machine.build import KERNEL, PDP11, PRISTINE_DISK, fresh_disk
+from harness.machine.scripted_machine import ScriptError, ScriptedMachine
+from harness.machine.simh import SimhError
+
+STEP_KINDS = ("forth", "wait", "simh")      # script.Step.kind
+# what a run reports as the user's error (a bad script, disk, kernel or machine)
+ERRORS = (script.ScriptSyntaxError, ScriptError, SimhError, DiskError)
 
 
 class Transcript:
@@ -67,7 +81,12 @@ def _failure(answer):
 
 
 def run_steps(machine, steps, keep_going=False):
-    """Run `steps` in order; stop at the first failure unless keep_going."""
+    """Run `steps` in order; stop at the first failure unless keep_going. A step
+    of a kind the runner does not know is refused (ScriptError) before any runs."""
+    unknown = [s for s in steps if s.kind not in STEP_KINDS]
+    if unknown:
+        raise ScriptError(f"line {unknown[0].lineno}: a step of kind {unknown[0].kind!r}; "
+                          f"a script's steps are {', '.join(STEP_KINDS)}")
     transcript = Transcript()
     transcript.console(machine.boot_output)
     result = Result("")
@@ -105,3 +124,46 @@ def run_steps(machine, steps, keep_going=False):
             break
     result.transcript = transcript.text()
     return result
+
+
+def check_writable(path):
+    parent = path.parent
+    if not parent.is_dir():
+        raise ScriptError(f"{parent}: no such directory for {path.name} (output "
+                          "directories must exist, as for plot)")
+    if path.is_dir():
+        raise ScriptError(f"{path}: is a directory, not a file to write")
+
+
+def check_start_image(disk):
+    """The image a run starts from is only read (each run boots a copy): it must be
+    there, readable and RL02-sized (harness.blocks.disk.check_image); DiskError if not."""
+    if disk == PRISTINE_DISK and not disk.exists():
+        raise DiskError(f"{disk}: no such disk image (run make)")
+    check_image(disk, writable=False)
+
+
+def run_file(script_path, transcript_path, trace_path, disk=PRISTINE_DISK,
+             keep_going=False, line_limit=60.0, kernel=KERNEL, simulator=PDP11):
+    """Run the console script at script_path on a fresh copy of `disk`; write the
+    transcript and the plant trace (whole, even when a line failed). (steps,
+    Result); one of ERRORS, with nothing written, if the run cannot start."""
+    steps = script.read(script_path)
+    for path in (transcript_path, trace_path):
+        check_writable(path)
+    disk, kernel = Path(disk), Path(kernel)
+    check_start_image(disk)
+    with tempfile.TemporaryDirectory(prefix="harness-run-") as tmp:
+        try:
+            copy = fresh_disk(tmp, source=disk)
+        except OSError as e:
+            raise ScriptError(f"{disk}: cannot copy the disk image: {e.strerror}") from e
+        check_image(copy)                        # the copy the machine changes
+        with ScriptedMachine(copy.name, trace="trace.csv", cwd=tmp, simulator=simulator,
+                             line_limit=line_limit, kernel=kernel,
+                             kernel_map=kernel.with_suffix(".map")) as m:
+            result = run_steps(m, steps, keep_going=keep_going)
+        trace = (Path(tmp) / "trace.csv").read_bytes()
+    write_atomic(transcript_path, result.transcript.encode("latin-1"))
+    write_atomic(trace_path, trace)
+    return steps, result

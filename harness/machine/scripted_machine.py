@@ -30,11 +30,10 @@ from pathlib import Path
 import pexpect
 
 from harness.machine import pty_child
-from harness.machine.simh import MACHINE_INI, PDP11, SimhError, examined
+from harness.machine.build import KERNEL, KERNEL_MAP, MACHINE_INI, PDP11, ROOT
+from harness.machine.kernel_layout import KernelMapError, read_kernel_map
+from harness.machine.simh import examined
 
-ROOT = Path(__file__).resolve().parents[2]
-KERNEL = ROOT / "build" / "kernel.lda"
-KERNEL_MAP = ROOT / "build" / "kernel.map"
 KERNEL_SYMBOLS = ("QUERY", "RXHEAD", "RXTAIL", "RING", "RING-MASK", "TIB-SIZE")
 
 PROMPT = "sim> "
@@ -42,7 +41,7 @@ PROMPT = "sim> "
 # the next event instead of counting one instruction time per host loop: the same
 # simulated time and instruction counts, far less host work. SIMH's own switch (a
 # hidden CPU register). Not for the console: idle time there is paced to the
-# wall clock at the clock's ticks (pdp11-devices/kw11l.c), which this would skip.
+# wall clock at the clock's ticks (pdp11-devices/bus/kw11l.c), which this would skip.
 SKIP_WAITS = "deposit cpu wait_enable 1"
 # SIMH reports every stop as "\n<reason>, PC: <octal> (<instruction>)\n" then prompts.
 STOP = re.compile(r"\r\n([^\r\n]*), PC: ([0-7]+) \(([^\r\n]*)\)\r\nsim> ")
@@ -68,24 +67,6 @@ class Answer:
     @property
     def ok(self):
         return not self.error and not self.stopped
-
-
-def read_kernel_map(path=KERNEL_MAP):
-    """name -> address for every line "OOOOOO NAME" of the kernel map."""
-    try:
-        text = Path(path).read_text()
-    except OSError as e:
-        raise ScriptError(f"cannot read the kernel map {path}: {e.strerror}: run make") from e
-    symbols = {}
-    for line in text.splitlines():
-        parts = line.split()
-        if len(parts) == 2 and re.fullmatch(r"[0-7]+", parts[0]):
-            symbols.setdefault(parts[1].upper(), int(parts[0], 8))
-    missing = [s for s in KERNEL_SYMBOLS if s not in symbols]
-    if missing:
-        raise ScriptError(f"{path} lacks {', '.join(missing)}: a kernel this harness "
-                          "does not know how to feed")
-    return symbols
 
 
 def feed_commands(sym, text, head):
@@ -115,7 +96,10 @@ class ScriptedMachine(contextlib.AbstractContextManager):
                            ("disk", Path(cwd) / disk)):
             if not Path(path).is_file():
                 raise ScriptError(f"the {what} {path} does not exist (run make)")
-        self.sym = read_kernel_map(kernel_map)
+        try:
+            self.sym = read_kernel_map(kernel_map, KERNEL_SYMBOLS)
+        except KernelMapError as e:
+            raise ScriptError(str(e)) from e
         self.max_line = self.sym["TIB-SIZE"] - 1          # what ACCEPT takes
         self.line_limit = line_limit
         self._tmp = tempfile.TemporaryDirectory(prefix="scripted-machine-")
@@ -220,14 +204,6 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         if head != int(found[f"{self.sym['RXTAIL']:o}"], 8):
             raise ScriptError("the console ring is not empty at the prompt")
         return head
-
-    def interrupt(self, limit=None):
-        """Type ^C to a line that is still running (the DL11 receiver's buffer,
-        done flag and interrupt request, as a key press sets them) and run on to
-        the next prompt, or for `limit` simulated seconds."""
-        for command in ("deposit tti buf 3", "deposit tti done 1", "deposit tti int 1"):
-            self.simh(command)
-        return self.resume(limit)
 
     def resume(self, limit=None):
         """Let a line that is still running go on to the next prompt (or for

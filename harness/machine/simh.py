@@ -36,11 +36,7 @@ import tempfile
 import threading
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parents[2]
-PDP11 = ROOT / "build" / "pdp11"
-PDP11_STOCK = ROOT / "build" / "pdp11-stock"
-MACHINE_INI = ROOT / "pdp11-devices" / "machine.ini"
-KERNEL = ROOT / "build" / "kernel.lda"
+from harness.machine.build import KERNEL, MACHINE_INI, PDP11
 
 _EXAMINED = re.compile(r"^([A-Za-z0-9_]+):\t([0-9]+)\s*$", re.M)
 

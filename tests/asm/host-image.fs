@@ -1,5 +1,5 @@
 \ tests/asm/host-image.fs: a 64 KB target image on the host, and the four words
-\ forth/asm.fs assembles through (forth-contract.md).
+\ forth/asm.fs assembles through (forth/ASSEMBLER.md).
 warnings off
 create image 65536 allot
 variable ahere-var

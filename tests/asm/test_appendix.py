@@ -4,7 +4,7 @@ assembled by pdpy11: the destination-first reading of the 1983 code, checked
 on the real thing, with its nesting and branch distances."""
 from pathlib import Path
 
-from harness.asmcheck import corpus, host_asm, pdpy11_ref, simh_disasm
+from tests.asm.asmcheck import corpus, host_asm, pdpy11_ref, simh_disasm
 
 APPENDIX = Path(__file__).resolve().parent / "appendix"
 

@@ -1,7 +1,7 @@
 """The host assembler (forth/asm.fs under gforth) against two independent references.
 
 Corpus: tests/asm/corpus.txt (generated, every instruction x every mode it takes)
-and tests/asm/handwritten.txt (DESIGN.md's examples and the appendix's lines,
+and tests/asm/handwritten.txt (docs/design.md's examples and the appendix's lines,
 by hand). Each unit pairs FORTH text with MACRO-11 text and must give the same
 words from (a) pdpy11 on the MACRO-11 text and (c) the host assembler on the
 FORTH text, and (b) SIMH's disassembler must read the host's words back as the
@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from harness.asmcheck import corpus, gen_corpus, host_asm, pdpy11_ref, simh_disasm
+from tests.asm.asmcheck import corpus, gen_corpus, host_asm, pdpy11_ref, simh_disasm
 
 HERE = Path(__file__).resolve().parent
 ASM = HERE.parent.parent / "forth" / "asm.fs"
@@ -40,7 +40,7 @@ def host(units):
 def test_generated_corpus_is_current(capsys):
     gen_corpus.main()
     assert capsys.readouterr().out == (HERE / "corpus.txt").read_text(), \
-        "regenerate: python -m harness.asmcheck.gen_corpus > tests/asm/corpus.txt"
+        "regenerate: python -m tests.asm.asmcheck.gen_corpus > tests/asm/corpus.txt"
 
 
 def test_corpus_covers_every_instruction(units):
@@ -52,7 +52,7 @@ def test_corpus_covers_every_instruction(units):
     assert defined - used == set()
 
 
-# The words forth/asm.fs may use (forth-contract.md: the subset the
+# The words forth/asm.fs may use (forth/ASSEMBLER.md: the subset the
 # metacompiler compiles for the target), plus the includer's four.
 PORTABLE = set("""
     : ; CREATE DOES> , @ ! +! IF ELSE THEN BEGIN UNTIL WHILE REPEAT DO LOOP

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from harness.asmcheck import corpus, host_asm, resident
+from tests.asm.asmcheck import corpus, host_asm, resident
 
 HERE = Path(__file__).resolve().parent
 

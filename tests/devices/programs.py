@@ -1,10 +1,22 @@
-"""The PDP-11 programs the device tests run (see pdp11prog.py for conventions)."""
+"""The PDP-11 programs the device tests run (see pdp11prog.py for conventions),
+and reading their results back."""
 from harness.analysis.pdp11prog import Program, RESULTS
+from harness.machine import simh
 
 LKS = 0o177546
 DRV_CSR, DRV_OUT, DRV_IN = 0o167770, 0o167772, 0o167774
 DAC = [0o170440, 0o170442, 0o170444, 0o170446]
 R = [RESULTS + 2 * i for i in range(16)]
+
+
+def results(output, count, base=RESULTS):
+    """The `count` result words at 2000.. as examined after the run."""
+    ex = simh.examined(output)
+    return [ex[f"{base + 2 * i:o}"] for i in range(count)]
+
+
+def examine_results(count, base=RESULTS):
+    return "".join(f"examine {base + 2 * i:o}\n" for i in range(count))
 
 
 def lks_bits():

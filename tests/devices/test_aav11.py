@@ -1,5 +1,5 @@
 """AAV11-A D/A: 12-bit codes, read-back, byte writes, 2048 at power-up and INIT."""
-from harness.analysis.pdp11prog import results, examine_results
+from programs import examine_results, results
 from harness.machine import simh
 import programs
 

@@ -1,7 +1,7 @@
 """DRV11 (counter multiplexer): register bits, byte writes, INIT, interrupts."""
 import pytest
 
-from harness.analysis.pdp11prog import results, examine_results
+from programs import examine_results, results
 from harness.machine import simh
 import programs
 

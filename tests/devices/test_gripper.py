@@ -1,13 +1,13 @@
 """The gripper as a PDP-11 program sees it: step pulses on DRV11 OUTBUF bit 4
 (DIR bit 5), the finger contact switch on the CSR's REQ B, SET PLANT GRIPPER,
-SHOW PLANT and the trace's last three columns (pdp11-devices/gripper.h)."""
+SHOW PLANT and the trace's last three columns (pdp11-devices/plant/gripper.h)."""
 import csv
 import subprocess
 from pathlib import Path
 
-from harness.analysis.pdp11prog import examine_results, results
+from programs import examine_results, results
 from harness.machine import simh
-from harness.machine.robot import parse_show_gripper
+from harness.machine.plant_rows import parse_show_gripper
 import programs
 
 GRIPPER_TEST = Path(__file__).resolve().parents[2] / "build" / "gripper_test"
@@ -93,3 +93,14 @@ def test_a_part_is_placed_with_its_width_first():
     shows = [parse_show_gripper(chunk) for chunk in out.split("PLANT, seed")[1:]]
     assert shows[0]["part"] == (800.0, 800.0, 400.0)       # the bad PARTZ changed nothing
     assert shows[1]["part"] is None                         # OBJECT=0 takes it away
+
+
+def test_a_set_that_closes_the_contact_raises_req_b_at_once():
+    """SET PLANT GRIPPER OBJECT puts an object between the fingers: the contact
+    switch closes and the DRV11 (INT ENB B set) requests its interrupt there and
+    then, through the hook machine_sys.c registers with the plant (the plant
+    names no bus device); OBJECT=0 withdraws it."""
+    out = simh.run("deposit 167770 40\nexamine drv11 intb\n"
+                   "set plant gripper opening=1\nset plant gripper object=1\n"
+                   "examine drv11 intb\nset plant gripper object=0\nexamine drv11 intb\n")
+    assert [v for name, v in simh.examined_all(out) if name == "INTB"] == [0, 1, 0]

@@ -1,10 +1,10 @@
 """SIMH's EXAMINE and DEPOSIT at a project device register's I/O-page address
 (160000-177777, as the CPU addresses it) show and set what the CPU sees
-(pdp11-devices/io_page_examine.c), before the first run as after it."""
-import shutil
+(pdp11-devices/simh/io_page_examine.c), before the first run as after it."""
 
 import pytest
 
+from harness.machine.build import fresh_disk
 from harness.machine.robot import Robot, numbers
 from harness.machine.simh import run
 
@@ -14,9 +14,7 @@ REGISTERS = {0o177546: "KW11-L LKS", 0o167770: "DRV11 CSR", 0o167772: "DRV11 OUT
 
 @pytest.fixture
 def forth(tmp_path):
-    disk = tmp_path / "rl0.dsk"
-    shutil.copy("build/robot.dsk", disk)
-    with Robot(disk=disk) as r:
+    with Robot(disk=fresh_disk(tmp_path, "rl0.dsk")) as r:
         yield r
 
 

@@ -2,7 +2,7 @@
 second, interrupts at vector 100 only with IE set and priority below 6."""
 import pytest
 
-from harness.analysis.pdp11prog import results, examine_results
+from programs import examine_results, results
 from harness.machine import simh
 import programs
 
@@ -68,7 +68,7 @@ def test_changing_rate_mid_run_keeps_time_and_ticks_continuous():
 
 @pytest.mark.parametrize("pacing", ["set clk realtime", "set cpu idle"])
 def test_wall_clock_pacing_changes_no_count(pacing):
-    """SET CLK REALTIME and SET CPU IDLE pace the host (pdp11-devices/kw11l.c); what
+    """SET CLK REALTIME and SET CPU IDLE pace the host (pdp11-devices/bus/kw11l.c); what
     happens at which instruction count stays the same (0.2 simulated s here)."""
     assert count_ticks(RATE // 5, extra=pacing + "\n") == count_ticks(RATE // 5)
 

@@ -4,7 +4,7 @@ import math
 
 import pytest
 
-from harness.analysis.pdp11prog import results, examine_results
+from programs import examine_results, results
 from harness.machine import simh
 from plantio import AXES, QUIET, show_rows, read_trace
 import programs

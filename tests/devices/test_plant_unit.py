@@ -1,4 +1,4 @@
-"""The plant physics alone: build/plant_test (pdp11-devices/plant_test.c)."""
+"""The plant physics alone: build/plant_test (tests/devices/plant_test.c)."""
 import subprocess
 from pathlib import Path
 

@@ -1,6 +1,6 @@
 """SIMH's own devices still work in build/pdp11: the RL disk (needed to boot the
 FORTH system) and the console keyboard, now polled at instruction-count pace."""
-from harness.analysis.pdp11prog import results, examine_results
+from programs import examine_results, results
 from harness.machine import simh
 import programs
 

@@ -1,17 +1,16 @@
-"""FLUSH is durable: a short version of make soak-disk (harness/bench/disk_soak.py), and
+"""FLUSH is durable: a short version of make soak-disk (harness/soak/disk_soak.py), and
 the write-through's failure path (an fsync that fails is a FORTH error)."""
-import shutil
 
 import pytest
 
-from harness.bench import disk_soak
+from harness.soak import disk_soak
+from harness.machine.build import fresh_disk
 from harness.machine.machine import ForthError, Machine
 from tests.run.common import failing_fsync_library, needs_build
 
 @needs_build
 def test_flushed_blocks_survive_kill_9(tmp_path):
-    image = tmp_path / "soak.dsk"
-    shutil.copyfile(disk_soak.PRISTINE, image)
+    image = fresh_disk(tmp_path, "soak.dsk")
     tally = disk_soak.soak(image, 10)
     # cycles 5 and 10 kill during FLUSH: 8 x 2 confirmed blocks, 8 + 2 x 2 unconfirmed
     assert tally.cycles == 10 and tally.flushed == 16 and tally.unconfirmed == 12
@@ -46,8 +45,7 @@ def test_each_cycle_writes_new_contents():
 @needs_build
 def test_a_failed_fsync_is_a_write_error_not_ok(tmp_path, monkeypatch):
     monkeypatch.setenv("LD_PRELOAD", str(failing_fsync_library(tmp_path)))
-    image = tmp_path / "eio.dsk"
-    shutil.copyfile(disk_soak.PRISTINE, image)
+    image = fresh_disk(tmp_path, "eio.dsk")
     with Machine(disk=image) as m:
         with pytest.raises(ForthError) as err:
             m.send("3000 BLOCK DROP UPDATE FLUSH")

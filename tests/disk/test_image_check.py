@@ -97,7 +97,7 @@ def test_console_refuses_a_bad_image_before_booting(tmp_path, capsys, case, mess
 def test_regress_checks_the_pristine_image_once_before_any_scenario(tmp_path, capsys,
                                                                    monkeypatch):
     path = make(tmp_path, "empty")
-    monkeypatch.setattr(regress, "PRISTINE", path)
+    monkeypatch.setattr(regress, "PRISTINE_DISK", path)
     monkeypatch.setattr(regress.regression, "main", lambda *a: pytest.fail("ran"))
     assert cli.main(["regress"]) == 1
     err = capsys.readouterr().err

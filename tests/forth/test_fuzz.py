@@ -1,8 +1,8 @@
 """The short console fuzz (make fuzz runs 10 000 lines): 2 000 seeded random
 lines of issue 8's kinds end at the prompt every one, and the blocks still
 load and move the robot afterwards."""
-from harness.bench.fuzz import fuzz
-from harness.bench.fuzz_lines import LineMaker
+from harness.fuzz.console_fuzz import fuzz
+from harness.fuzz.lines import LineMaker
 
 
 def test_lines_are_seeded():

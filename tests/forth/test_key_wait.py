@@ -2,22 +2,20 @@
 ring empty, and polls the DL11 itself while the priority masks that interrupt, so
 `Disable.Interrupts` typed at the terminal (block 1008) leaves the console usable.
 Lines here arrive through the DL11 (harness/machine/machine.py types into the pty)."""
-import shutil
 
 import pytest
 
-from harness.machine.machine import KERNEL, SIMULATOR, Machine
+from harness.machine.build import KERNEL, PDP11 as SIMULATOR, PRISTINE_DISK, fresh_disk
+from harness.machine.machine import Machine
 
-DISK = KERNEL.parent / "robot.dsk"
 
 
 @pytest.fixture
 def appendix(tmp_path):
-    for need in (KERNEL, SIMULATOR, DISK):
+    for need in (KERNEL, SIMULATOR, PRISTINE_DISK):
         if not need.exists():
             pytest.fail(f"build first: {need} (make)")
-    shutil.copy(DISK, tmp_path / "rl0.dsk")
-    with Machine(disk=tmp_path / "rl0.dsk") as m:
+    with Machine(disk=fresh_disk(tmp_path, "rl0.dsk")) as m:
         m.send("1000 LOAD")
         yield m
 

@@ -7,7 +7,7 @@ import sys
 import pytest
 
 from harness.cli import main
-from harness.machine.simh import ROOT
+from harness.machine.build import ROOT
 from timing_programs import counting_handler
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"

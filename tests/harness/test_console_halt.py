@@ -1,9 +1,10 @@
 """The console's hint when the PDP-11 stops by itself (harness/machine/console_halt.py)."""
 import pexpect
 
-from harness.machine.console_halt import HaltWatcher, kernel_entry
+from harness.machine.console_halt import HaltWatcher
+from harness.machine.kernel_layout import entry as kernel_entry
 from harness.machine.machine import SIMULATOR
-from harness.machine.simh import KERNEL, MACHINE_INI
+from harness.machine.build import KERNEL, MACHINE_INI
 
 
 def test_a_halt_gets_a_hint_in_pieces():

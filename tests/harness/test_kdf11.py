@@ -1,4 +1,4 @@
-"""The KDF11-A pricer against the worked examples of shared/kdf11-timing.md and
+"""The KDF11-A pricer against the worked examples of docs/kdf11-timing.md and
 the table's structure (basic + source + destination)."""
 import pytest
 

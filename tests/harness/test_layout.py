@@ -3,13 +3,15 @@ packages below it, never sideways or up; no module imports itself round a circle
 every name imported from a harness module exists there. Read from the source with
 ast (imports inside functions included), nothing imported."""
 import ast
+import re
 from pathlib import Path
 
 HARNESS = Path(__file__).resolve().parents[2] / "harness"
 
 # the import order, bottom first; a package may import only packages of a lower rank
-RANK = {"blocks": 0, "machine": 1, "analysis": 2, "lab": 2, "asmcheck": 2,
-        "commands": 3, "bench": 4, "cli": 4, "__main__": 5}
+RANK = {"blocks": 0, "machine": 1, "analysis": 2, "lab": 2,
+        "commands": 3, "bench": 4, "fuzz": 4, "soak": 4, "figures": 4, "cli": 4,
+        "__main__": 5}
 
 
 def module_name(path):
@@ -155,8 +157,91 @@ def test_the_checks_see_a_circle_an_upward_import_and_a_stale_name(tmp_path):
         "harness.machine.robot imports harness.commands.run",
         "harness.lab.server imports harness.analysis.trace"]
     edges = graph()
-    assert "harness.machine.simh" in edges["harness.machine.robot"]    # the parser sees imports
-    assert "harness.commands.run" in edges["harness.commands.regression"]
+    assert "harness.machine.build" in edges["harness.machine.robot"]    # the parser sees imports
+    assert "harness.machine.script_run" in edges["harness.analysis.regression"]
     stale = tmp_path / "stale.py"
     stale.write_text("from harness.machine.robot import Robot, no_such_name\n")
     assert missing_names([stale]) == [f"{stale}:1: harness.machine.robot has no no_such_name"]
+
+
+# Each fact of the build and the machine has one home (issue 17): the name is
+# assigned there and only imported elsewhere.
+FACT_HOMES = {
+    "harness.machine.build": ("ROOT", "BUILD", "PDP11", "PDP11_STOCK", "MACHINE_INI", "KERNEL",
+                              "KERNEL_MAP", "PRISTINE_DISK", "WORKING_DISK", "RATE"),
+    "harness.machine.kernel_layout": ("BODY", "SMUDGE", "LENGTH", "CHAINS"),
+    "harness.machine.plant_rows": ("AXES", "COLUMNS", "AXIS_COLUMNS", "GRIPPER_COLUMNS"),
+}
+# ... and the literals that spell those facts appear only in their home (as a
+# value: a path or a name; prose that mentions them, a help text, is not counted)
+FACT_LITERALS = {"robot.dsk": "harness.machine.build", "XYZT": "harness.machine.plant_rows",
+                 "kernel.lda": "harness.machine.build", "kernel.map": "harness.machine.build"}
+
+
+def assigned_names(tree):
+    """Names a module assigns at its top level (not the ones it imports)."""
+    return {n.id for node in tree.body if isinstance(node, (ast.Assign, ast.AnnAssign))
+            for t in (node.targets if isinstance(node, ast.Assign) else [node.target])
+            for n in ast.walk(t) if isinstance(n, ast.Name)}
+
+
+def facts_away_from_home(sources):
+    """`module: NAME` for each fact assigned, `module: 'literal'` for each fact's
+    literal in code, and `module: root from __file__` outside the fact's home.
+    sources: module name -> source text."""
+    home_of = {name: home for home, names in FACT_HOMES.items() for name in names}
+    wrong = []
+    for module, text in sorted(sources.items()):
+        tree = ast.parse(text)
+        wrong += [f"{module}: {n}" for n in sorted(assigned_names(tree))
+                  if home_of.get(n, module) != module]
+        docstrings = {id(node.body[0].value) for node in ast.walk(tree)
+                      if isinstance(node, (ast.Module, ast.FunctionDef, ast.ClassDef))
+                      and node.body and isinstance(node.body[0], ast.Expr)}
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Constant) and isinstance(node.value, str) \
+                    and id(node) not in docstrings and not any(c.isspace() for c in node.value):
+                wrong += [f"{module}: {lit!r}" for lit, home in FACT_LITERALS.items()
+                          if lit in node.value and home != module]
+            if isinstance(node, ast.Attribute) and node.attr == "parents" \
+                    and module != "harness.machine.build":
+                wrong.append(f"{module}: root from __file__")
+    return wrong
+
+
+def test_each_fact_has_one_home():
+    wrong = facts_away_from_home({m: p.read_text() for m, p in modules().items()})
+    assert not wrong, ("facts defined away from their home (import them from "
+                       "harness.machine.build, kernel_layout or plant_rows):\n" + "\n".join(wrong))
+
+
+def test_the_fact_check_sees_a_copy():
+    assert facts_away_from_home({"harness.lab.x": 'RATE = 300_000\nD = "build/robot.dsk"\n'
+                                 'R = Path(__file__).resolve().parents[2]\n'}) == [
+        "harness.lab.x: RATE", "harness.lab.x: 'robot.dsk'", "harness.lab.x: root from __file__"]
+    assert facts_away_from_home({"harness.lab.x": '"""from build/robot.dsk"""\n'
+                                 "from harness.machine.build import RATE\n"
+                                 'HELP = "default: build/robot.dsk"\n'}) == []
+
+
+def test_every_package_has_its_line_in_the_readme():
+    """harness/README.md's table names each ranked package, and only those."""
+    table = (HARNESS / "README.md").read_text()
+    named = {m.group(1) for m in re.finditer(r"^\| \d \| `(\w+)(?:/|\.py)`", table, re.M)}
+    assert named == set(RANK), sorted(named ^ set(RANK))
+
+
+DEVICE_KINDS = ("bus", "plant", "lab", "simh")    # pdp11-devices/, one folder per kind
+
+
+def test_the_devices_are_sorted_by_kind():
+    """pdp11-devices/ holds its kinds' folders, the shared header and the machine's
+    configuration; every C file is in a kind's folder, which mk/devices.mk builds."""
+    devices = HARNESS.parent / "pdp11-devices"
+    top = sorted(p.name for p in devices.iterdir())
+    assert top == sorted(DEVICE_KINDS + ("devices.h", "machine.ini")), top
+    assert all(p.parent.name in DEVICE_KINDS for p in devices.rglob("*.[ch]")
+               if p.name != "devices.h")
+    kinds = re.search(r"^DEV_KINDS\s*:=\s*(.*)$", (HARNESS.parent / "mk" / "devices.mk")
+                      .read_text(), re.M).group(1).split()
+    assert tuple(kinds) == DEVICE_KINDS

@@ -72,7 +72,7 @@ def test_held_codes_follow_the_raised_zero(x):
 
 def test_kv_and_true_zero_from_the_trace(servo_trace, x):
     kv = mv.estimate_kv(x)
-    assert kv == pytest.approx(19.53, abs=0.01)        # DESIGN.md's default Kv
+    assert kv == pytest.approx(19.53, abs=0.01)        # docs/design.md's default Kv
     assert np.median(mv.true_zero(x, kv)) == pytest.approx(2048 + 3.0, abs=0.1)  # offset +3
     assert mv.estimate_kv(trace.read(servo_trace).axis("Y")) is None   # one code only
 

@@ -39,7 +39,7 @@ def test_servo_md_cost_table_matches_timing_servo():
     """docs/servo.md's cost table is what `timing --servo move` measures (instruction
     counts and KDF11-A prices, no host time): a kernel change that moves it shows here."""
     from harness.analysis import servo_timing
-    from harness.machine.simh import ROOT
+    from harness.machine.build import ROOT
     row = re.search(r"^\| during a move [^|]*\| (\d+) \| ([\d.]+) \| (\d+) \|",
                     (ROOT / "docs" / "servo.md").read_text(), re.M)
     _, report = servo_timing.measure("move")

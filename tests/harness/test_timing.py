@@ -1,5 +1,5 @@
 """Pricing executed code from SIMH's CPU history, on hand-assembled programs
-whose cost is worked out here by hand from shared/kdf11-timing.md (MMU off)."""
+whose cost is worked out here by hand from docs/kdf11-timing.md (MMU off)."""
 import pytest
 
 from harness.analysis import kdf11, timing

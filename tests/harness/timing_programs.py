@@ -1,5 +1,5 @@
 """Hand-assembled programs for the timing tests, with their cost worked out by
-hand from shared/kdf11-timing.md (memory management off)."""
+hand from docs/kdf11-timing.md (memory management off)."""
 from harness.analysis.pdp11prog import Program
 from servo_program import LKS
 

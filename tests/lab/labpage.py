@@ -3,7 +3,7 @@ import time
 
 from selenium.webdriver.common.by import By
 
-from harness.lab.launch import ROOT
+from harness.machine.build import ROOT
 
 ARTIFACTS = ROOT / "build" / "test-artifacts"
 

@@ -5,6 +5,9 @@ BYE leaves. The screenshot is kept in build/test-artifacts/lab.png."""
 import pytest
 from selenium.webdriver.common.by import By
 
+from harness.analysis.trace import parse_rows
+from harness.machine.plant_rows import COLUMNS
+
 from labpage import ARTIFACTS, click, js, type_line, wait_for
 
 # The lab boots with the amplifier rack off, as make run does: nothing drifts until
@@ -60,7 +63,8 @@ def test_a_move_shows_on_the_robot_and_the_scope(page):
         counters = js(page, "windowRows().rows.map(r => r[6])")
         assert min(counters) < 50 and max(counters) > 350
     csv = js(page, "window.lab.csv()")
-    assert csv.startswith("time_s,axis,dac,vcmd,vel,pos,counter\n") and ",Z," in csv
+    assert csv.startswith(",".join(COLUMNS) + "\n") and ",Z," in csv   # the gripper's too
+    assert parse_rows(csv.splitlines(), "the page's CSV")          # a plant trace, as it says
 
 
 def test_pause_holds_simulated_time_and_step_is_one_tick(page):

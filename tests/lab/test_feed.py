@@ -10,10 +10,10 @@ def test_lines_keep_a_partial_line_for_the_next_read():
 
 
 def test_plant_rows_in_the_trace_columns_and_extra_columns_are_ignored():
-    assert plant_row(lab_row(b"P,0.016667,Z,2100,1015.560,12.500,-4000.000,-3,1")) == [
-        0.016667, 2, 2100, 1015.56, 12.5, -4000.0, -3]
-    assert plant_row(lab_row(b"P,0.1,Q,1,2,3,4,5")) is None      # no such axis
-    assert plant_row(lab_row(b"P,0.1,X,1")) is None              # cut short
+    assert plant_row(lab_row(b"P,0.016667,Z,2100,1015.560,12.500,-4000.000,-3,1.25,1,7,9")) == [
+        0.016667, 2, 2100, 1015.56, 12.5, -4000.0, -3, 1.25, 1, 7]
+    assert plant_row(lab_row(b"P,0.1,Q,1,2,3,4,5,0,0,0")) is None      # no such axis
+    assert plant_row(lab_row(b"P,0.1,X,1,2,3,4,5")) is None            # no gripper columns
 
 
 def test_lab_rows():

@@ -1,7 +1,6 @@
 """python -m harness lab from the shell: bad input is one clear line and exit 1; a
 simulator that dies under the lab ends it, saying so."""
 import os
-import shutil
 import signal
 import socket
 import sys
@@ -9,7 +8,8 @@ import sys
 import pexpect
 
 from harness.cli import main
-from harness.lab.launch import ROOT, LabProcess
+from harness.lab.launch import LabProcess
+from harness.machine.build import ROOT, fresh_disk
 from tests.run.common import outlived
 
 
@@ -25,8 +25,7 @@ def test_a_missing_disk_is_one_clear_line(tmp_path, capsys):
 
 
 def test_a_busy_port_is_one_clear_line(tmp_path, capsys):
-    disk = tmp_path / "robot.dsk"
-    shutil.copyfile(ROOT / "build" / "robot.dsk", disk)
+    disk = fresh_disk(tmp_path)
     with socket.socket() as taken:
         taken.bind(("127.0.0.1", 0))
         taken.listen()
@@ -45,8 +44,7 @@ def test_a_simulator_that_dies_ends_the_lab(tmp_path):
 def lab_in_a_terminal(tmp_path):
     """python -m harness lab on a pty (a shell's terminal), booted to the prompt;
     the child and its disk."""
-    disk = tmp_path / "robot.dsk"
-    shutil.copyfile(ROOT / "build" / "robot.dsk", disk)
+    disk = fresh_disk(tmp_path)
     child = pexpect.spawn(sys.executable, ["-m", "harness", "lab", "--port", "0",
                                            "--speed", "full", "--disk", str(disk)],
                           cwd=str(ROOT), timeout=30, encoding="latin-1")

@@ -1,16 +1,15 @@
-"""The LAB device (pdp11-devices/lab.c) in build/pdp11: its rows, its commands,
+"""The LAB device (pdp11-devices/lab/lab.c) in build/pdp11: its rows, its commands,
 and that pacing, pausing and stepping leave the machine's run unchanged."""
 import os
-import shutil
 import threading
 import time
 
 import pytest
 
 from harness.machine import simh
-from harness.machine.console_session import KERNEL
+from harness.machine.build import KERNEL, fresh_disk
+from harness.machine.plant_rows import COLUMNS
 
-PRISTINE = simh.ROOT / "build" / "robot.dsk"
 TYPED = "1000 LOAD\rSet.Up.Robot\r800 800 400 0 Abs.Move\r"
 RUN_INSTRUCTIONS = 4_500_000          # 15 simulated seconds: the load, the set-up, the move
 
@@ -51,8 +50,9 @@ def test_rows_and_commands(tmp_path, ctl):
     assert samples[-1][2:] == [str(0o1234), "65535"]
     plant = rows(out, "P")                       # four samples a tick, every axis
     assert [p[1] for p in plant[:8]] == list("XYZTXYZT")
-    assert [p[0] for p in plant[::4][:5]] == ["0.004167", "0.008333", "0.012500",
-                                              "0.016667", "0.020833"]
+    assert [round(float(p[0]), 6) for p in plant[::4][:5]] == [0.004167, 0.008333, 0.0125,
+                                                              0.016667, 0.020833]
+    assert {len(p) for p in plant} == {len(COLUMNS)}  # the plant trace's row, gripper too
     x = plant[0][2:]                             # DAC at zero volts; x drifts on its offset
     assert x[:2] == ["2048", "-58.590"] and float(x[2]) < 0 and x[4] == "0"
 
@@ -76,8 +76,7 @@ def test_set_lab_speed_refuses_bad_values_and_keeps_the_old_one(tmp_path):
 
 
 def run_servo(tmp_path, name, lab=None, ctl_commands=None):
-    disk = tmp_path / f"{name}.dsk"
-    shutil.copyfile(PRISTINE, disk)
+    disk = fresh_disk(tmp_path, f"{name}.dsk")
     trace = tmp_path / f"{name}.csv"
     script = (f"attach rl0 {disk}\nattach plant {trace}\n"
               + (f"attach lab {lab}\n" if lab else "")

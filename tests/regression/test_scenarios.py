@@ -1,9 +1,9 @@
 """Each regression scenario (tests/regression/scenarios) run and compared with
-its golden transcript and expected trace features (harness/commands/regression.py).
+its golden transcript and expected trace features (harness/analysis/regression.py).
 Goldens: `make regression-update` rewrites them and prints what changed."""
 import pytest
 
-from harness.commands import regression
+from harness.analysis import regression
 from tests.run.common import needs_build
 
 pytestmark = needs_build

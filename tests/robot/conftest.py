@@ -1,13 +1,11 @@
 """Fixtures for the robot tests: the appendix blocks loaded on build/pdp11,
 driven in lock-step with simulated time (harness/machine/robot.py)."""
-import shutil
-
 import pytest
 
-from harness.machine.machine import KERNEL, SIMULATOR
-from harness.machine.robot import MAP, Robot
+from harness.machine.build import KERNEL, KERNEL_MAP as MAP, PDP11 as SIMULATOR, fresh_disk
+from harness.machine.build import PRISTINE_DISK as DISK
+from harness.machine.robot import Robot
 
-DISK = KERNEL.parent / "robot.dsk"
 # Helpers typed at the prompt (not in the blocks): print the four counters,
 # the four cells of one of the appendix's arrays, and (with the servo's clock
 # interrupt off) put every DAC at its 0-Vel code so that the axes only creep.
@@ -25,8 +23,7 @@ def boot(tmp_path):
     robots = []
 
     def start(trace=False):
-        disk = tmp_path / f"rl0-{len(robots)}.dsk"
-        shutil.copy(DISK, disk)
+        disk = fresh_disk(tmp_path, f"rl0-{len(robots)}.dsk")
         path = tmp_path / f"trace-{len(robots)}.csv" if trace else None
         r = Robot(disk=disk, trace=path, timeout=20)  # a hung line fails fast
         r.trace_path = path

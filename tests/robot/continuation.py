@@ -4,7 +4,7 @@ import math
 
 import numpy as np
 
-from harness.bench.continuation_runs import PLANE, SQUARE, circle, vias_text as vias  # noqa: F401
+from harness.figures.continuation_runs import PLANE, SQUARE, circle, vias_text as vias  # noqa: F401
 
 
 def load(boot, servo_block=None, trace=True):

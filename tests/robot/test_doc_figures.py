@@ -6,7 +6,6 @@ current build, and these tests fail, naming the sentence, when a figure no
 longer matches. Fix the doc (re-measure: make servo-runs, make bench-robot),
 not the tolerance."""
 import re
-import shutil
 import tempfile
 from pathlib import Path
 
@@ -14,7 +13,8 @@ import pytest
 
 from harness.analysis import moves, trace
 from harness.analysis.tick_view import open_view
-from harness.bench import servo_runs
+from harness.figures import servo_runs
+from harness.machine.build import fresh_disk
 from harness.machine.robot import numbers
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -39,9 +39,7 @@ def quoted(name, pattern):
 
 def tick_view(tmp_path, **lines):
     """`python -m harness tick`'s view (harness/analysis/tick_view.py) on a disk copy."""
-    disk = tmp_path / "robot.dsk"
-    shutil.copy(servo_runs.DISK, disk)
-    return open_view(disk, **lines)
+    return open_view(fresh_disk(tmp_path), **lines)
 
 
 def test_free_bytes_and_load_time_as_documented(boot):

@@ -1,6 +1,6 @@
 """The gripper words of blocks 1044 and 1053 (the project's continuation),
 stepping the gripper from the 60 Hz interrupt (Interrupt.Path) one pulse a
-tick, against the plant's gripper (pdp11-devices/gripper.h): 100 steps an
+tick, against the plant's gripper (pdp11-devices/plant/gripper.h): 100 steps an
 inch, fully open at power-up, pull-out rate 300 steps/s, a finger switch on
 DRV11 REQ B. Measured: Close.Gripper gives 220 pulses (200 and 20 onto the
 stop), one a tick; a 1-inch object stops the fingers at 1.00 in and Grasp says

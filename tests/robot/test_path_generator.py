@@ -11,11 +11,11 @@ q(k + 1/2) - a/8, and rounds to the nearest count); the path ends exactly on
 the last via point; the closest approach to a square's corner is Paul's
 |v2 - v1| tau / 4 = 84.9 counts at 2400 counts/s, Blend 6."""
 import math
-import shutil
 
 import numpy as np
 import pytest
 
+from harness.machine.build import fresh_disk
 from harness.machine.robot import Robot
 
 from continuation import SQUARE, circle, paul_phases, paul_position, spline_points, vias
@@ -31,9 +31,7 @@ def gen(tmp_path_factory):
     interrupt off and Interrupt.Path on its vector (Path.Run wants it there;
     here nothing runs it but Path.Tick), Path.Tick and Trace.Path defined;
     each test starts its path at Desire.Pos 0 0 0 0."""
-    from conftest import DISK
-    disk = tmp_path_factory.mktemp("gen") / "rl0.dsk"
-    shutil.copy(DISK, disk)
+    disk = fresh_disk(tmp_path_factory.mktemp("gen"), "rl0.dsk")
     with Robot(disk=disk, timeout=20) as r:
         r.send("1000 LOAD 1040 LOAD Set.Up.Robot 0 177546O ! Path.Servo")
         for line in TICK_PATH:

@@ -17,7 +17,7 @@ segments (harness/analysis/path_metrics.py). Measured in the runs of docs/contin
 from harness.analysis import path_metrics as pm
 from harness.analysis import trace as tr
 
-from harness.bench.continuation_runs import run_path
+from harness.figures.continuation_runs import run_path
 
 from continuation import PLANE, SQUARE, circle, load
 

@@ -75,7 +75,7 @@ def test_load_error_keeps_the_prompt(boot):
 
 
 def test_reload_while_the_servo_runs(robot):
-    """DESIGN.md section 4: FORGET never leaves vector 100 pointing into the
+    """docs/design.md section 4: FORGET never leaves vector 100 pointing into the
     code it removes; the blocks load again and the servo comes back."""
     out = robot.send("FORGET Desire.Pos")
     assert "vector 000100 restored" in out

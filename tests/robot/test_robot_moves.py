@@ -1,4 +1,4 @@
-"""Moves on x, y, z with the blocks as printed, on the plant of DESIGN.md
+"""Moves on x, y, z with the blocks as printed, on the plant of docs/design.md
 section 3 (never tuned). Measured first (deterministic runs: harness/machine/robot.py),
 then pinned with bounds a little wider than the measurement.
 

@@ -1,6 +1,6 @@
 """Blocks 1030-1031: the project's proposed correction (not 1983 code), the
 servo with one ELSE, restored in 1006 so that the speed ramps up by Increment
-until MaxVel. Measured with it (harness/bench/servo_runs.py --block 1030): moves
+until MaxVel. Measured with it (harness/figures/servo_runs.py --block 1030): moves
 return and the axes stay within 9 counts of their targets while settling;
 after a minute at rest 0-Vel sits within one code of the plant's true zeros
 (x 2051/2051.0, y 2046/2046.1, z 2093/2093.0), where the printed code ends

@@ -6,10 +6,7 @@ from pathlib import Path
 
 import pytest
 
-ROOT = Path(__file__).resolve().parents[2]
-PRISTINE = ROOT / "build" / "robot.dsk"
-SIMULATOR = ROOT / "build" / "pdp11"
-KERNEL = ROOT / "build" / "kernel.lda"
+from harness.machine.build import KERNEL, PDP11 as SIMULATOR, PRISTINE_DISK as PRISTINE, ROOT  # noqa: F401 (shared)
 
 needs_build = pytest.mark.skipif(
     not all(p.is_file() for p in (PRISTINE, SIMULATOR, KERNEL)),
@@ -21,7 +18,7 @@ FAILING_FSYNC = "#include <errno.h>\nint fsync (int fd) { errno = EIO; return -1
 
 def failing_fsync_library(directory):
     """A shared library that makes every fsync fail with EIO, for LD_PRELOAD: the
-    host refusing to make a write durable (pdp11-devices/rl_durable.c's error path)."""
+    host refusing to make a write durable (pdp11-devices/simh/rl_durable.c's error path)."""
     if shutil.which("gcc") is None:
         pytest.skip("gcc is needed to build the fsync fault injector")
     source, library = Path(directory) / "fsync_eio.c", Path(directory) / "fsync_eio.so"

@@ -2,14 +2,14 @@
 back, and every way out (BYE, ^D, ^C and QUIT at sim>) leaves an UPDATEd block on
 the disk, or says plainly which blocks were not written."""
 import os
-import shutil
 import sys
 
 import pexpect
 import pytest
 
 from harness.machine.console_session import probe_prompt
-from tests.run.common import PRISTINE, ROOT, failing_fsync_library, needs_build, outlived
+from harness.machine.build import fresh_disk
+from tests.run.common import ROOT, failing_fsync_library, needs_build, outlived
 
 pytestmark = needs_build
 
@@ -33,8 +33,7 @@ def console(disk, *extra, env=None):
 
 def fresh_console(tmp_path, *extra, env=None):
     """The console on a fresh copy of the pristine disk: the child and the disk."""
-    disk = tmp_path / "work.dsk"
-    shutil.copyfile(PRISTINE, disk)
+    disk = fresh_disk(tmp_path, "work.dsk")
     return console(disk, *extra, env=env), disk
 
 

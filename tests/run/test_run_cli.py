@@ -6,7 +6,7 @@ import sys
 import pytest
 
 from harness.machine.script import MAX_LINE
-from harness.machine.scripted_machine import read_kernel_map
+from harness.machine.kernel_layout import read_kernel_map
 from tests.run.common import PRISTINE, ROOT, needs_build
 
 pytestmark = needs_build

@@ -1,7 +1,11 @@
 """The console script format: FORTH lines, comments, directives, bad lines."""
 import pytest
 
+from harness.machine.build import fresh_disk
 from harness.machine.script import ScriptSyntaxError, Step, parse, read
+from harness.machine.script_run import run_steps
+from harness.machine.scripted_machine import ScriptError, ScriptedMachine
+from tests.run.common import needs_build
 
 
 def test_lines_comments_and_directives():
@@ -38,3 +42,14 @@ def test_missing_and_binary_scripts(tmp_path):
     (tmp_path / "b.script").write_bytes(b"1 .\n\xff\n")
     with pytest.raises(ScriptSyntaxError, match="not an ASCII text file"):
         read(tmp_path / "b.script")
+
+
+@needs_build
+def test_a_step_of_unknown_kind_is_refused_before_anything_runs(tmp_path):
+    """A Step the parser never makes (kind "shell") is not typed to the FORTH as
+    a line: run_steps refuses the list, and the machine has run nothing of it."""
+    steps = [Step(1, "forth", "123"), Step(2, "shell", "rm -rf /")]
+    with ScriptedMachine(fresh_disk(tmp_path).name, cwd=tmp_path) as m:
+        with pytest.raises(ScriptError, match="line 2: a step of kind 'shell'"):
+            run_steps(m, steps)
+        assert "DEPTH . 0  ok" in m.line("DEPTH .").output   # not even the first step ran

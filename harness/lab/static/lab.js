@@ -3,13 +3,12 @@
 // machine, except for what the user types and the time controls.
 "use strict";
 
-const AXES = ["X", "Y", "Z", "T"];
 const COLORS = ["#58a6ff", "#3fb950", "#d29922", "#bc8cff"];
-const COUNTS_PER_UNIT = [800, 800, 800, 16000 / 360];     // plant.c: inches, degrees
-const UNITS = ["in", "in", "in", "\u00b0"];
+// What the plant is, from the server's hello (build/pdp11's SHOW PLANT LAYOUT,
+// harness/machine/plant_rows.py): its axes, their units, the row's columns.
+let AXES = [], UNITS = [], COUNTS_PER_UNIT = [], ROW = {};
 const KEEP_S = 40;                 // seconds of trace kept per axis (the widest window + margin)
 const GAP_S = 1 / 30;              // further apart than this: ticks the fast run did not report
-const ROW = { t: 0, axis: 1, dac: 2, vcmd: 3, vel: 4, pos: 5, counter: 6 };
 
 // ---- the connection ----------------------------------------------------------------
 const params = new URLSearchParams(location.search);
@@ -23,7 +22,7 @@ const send = (message) => socket.readyState === 1 && socket.send(JSON.stringify(
 
 const lab = {                      // everything the page knows; window.lab for tests
   stops: {}, status: { time: 0, tick: 0, state: "run", speed: "real", power: "off" },
-  servo: {}, perAxis: [], single: [], traces: AXES.map(() => []), latest: [null, null, null, null],
+  servo: {}, perAxis: [], single: [], traces: [], latest: [],
   rowsSeen: 0, frozenAt: null, axis: 0, window: 2, ended: false, connected: false, dirty: true,
 };
 window.lab = lab;
@@ -59,6 +58,7 @@ socket.onmessage = (event) => {
   if (m.t === "con") term.write(m.d);
   else if (m.t === "data") takeData(m);
   else if (m.t === "hello") {
+    learnPlant(m.plant);
     Object.assign(lab, { stops: m.stops, perAxis: m.per_axis, single: m.single, status: m.status });
     term.write(m.con);
     buildTable();
@@ -66,6 +66,15 @@ socket.onmessage = (event) => {
   } else if (m.t === "ended") showEnded(m.safe);
 };
 socket.onclose = () => { if (!lab.ended) showEnded(null, "the lab server went away"); };
+
+function learnPlant(plant) {
+  AXES = plant.axes.split("");
+  UNITS = plant.units.map((u) => (u === "deg" ? "\u00b0" : u));
+  COUNTS_PER_UNIT = plant.per_unit;
+  ROW = Object.fromEntries(plant.columns.map((name, i) => [name, i]));
+  lab.traces = AXES.map(() => []);
+  lab.latest = AXES.map(() => null);
+}
 
 function showEnded(safe, why) {
   lab.ended = true;
@@ -90,7 +99,7 @@ function takeData(m) {
   const cutoff = lab.status.time - KEEP_S;
   for (const trace of lab.traces) {
     let drop = 0;
-    while (drop < trace.length && trace[drop][ROW.t] < cutoff) drop++;
+    while (drop < trace.length && trace[drop][ROW.time_s] < cutoff) drop++;
     if (drop) trace.splice(0, drop);
   }
 }
@@ -279,7 +288,7 @@ const STRIPS = [
 
 function windowRows() {
   const end = lab.frozenAt !== null ? lab.frozenAt : lab.status.time;
-  const rows = lab.traces[lab.axis].filter((r) => r[ROW.t] >= end - lab.window && r[ROW.t] <= end);
+  const rows = lab.traces[lab.axis].filter((r) => r[ROW.time_s] >= end - lab.window && r[ROW.time_s] <= end);
   return { rows, end, start: end - lab.window };
 }
 
@@ -311,8 +320,8 @@ function drawScope() {
     for (const [key, , color] of strip.series) {
       g.strokeStyle = color; g.lineWidth = 2; g.beginPath();
       rows.forEach((r, k) => {
-        const X = tx(r[ROW.t]), Y = ty(r[ROW[key]]);
-        if (k === 0 || r[ROW.t] - rows[k - 1][ROW.t] > GAP_S) g.moveTo(X, Y);  // ticks not reported
+        const X = tx(r[ROW.time_s]), Y = ty(r[ROW[key]]);
+        if (k === 0 || r[ROW.time_s] - rows[k - 1][ROW.time_s] > GAP_S) g.moveTo(X, Y);  // ticks not reported
         else if (strip.steps || key === "counter") { g.lineTo(X, ty(rows[k - 1][ROW[key]])); g.lineTo(X, Y); }
         else g.lineTo(X, Y);
       });
@@ -381,10 +390,15 @@ function download(name, url) {
 }
 lab.csv = () => {                                    // the window, every axis, as the plant trace
   const end = lab.frozenAt !== null ? lab.frozenAt : lab.status.time, start = end - lab.window;
-  const rows = [].concat(...lab.traces).filter((r) => r[ROW.t] >= start && r[ROW.t] <= end)
-    .sort((a, b) => a[ROW.t] - b[ROW.t] || a[ROW.axis] - b[ROW.axis]);
-  return "time_s,axis,dac,vcmd,vel,pos,counter\n" + rows.map((r) =>
-    [r[0].toFixed(9), AXES[r[1]], r[2], r[3].toFixed(3), r[4].toFixed(3), r[5].toFixed(3), r[6]].join(",")).join("\n") + "\n";
+  const rows = [].concat(...lab.traces).filter((r) => r[ROW.time_s] >= start && r[ROW.time_s] <= end)
+    .sort((a, b) => a[ROW.time_s] - b[ROW.time_s] || a[ROW.axis] - b[ROW.axis]);
+  const columns = Object.keys(ROW);
+  return columns.join(",") + "\n" + rows.map((r) =>
+    columns.map((name) => (CSV_FORMAT[name] || String)(r[ROW[name]])).join(",")).join("\n") + "\n";
+};
+const CSV_FORMAT = {                                 // as plant_dev.c writes the row
+  time_s: (v) => v.toFixed(9), axis: (v) => AXES[v], grip: (v) => v.toFixed(2),
+  vcmd: (v) => v.toFixed(3), vel: (v) => v.toFixed(3), pos: (v) => v.toFixed(3),
 };
 document.getElementById("csv").addEventListener("click", () =>
   download(`scope-${lab.status.time.toFixed(3)}s.csv`, URL.createObjectURL(new Blob([lab.csv()], { type: "text/csv" }))));
@@ -455,7 +469,7 @@ function drawAsn() {
 // what the page costs the host.
 let lastTable = 0;
 function frame(now) {
-  if (lab.dirty) {
+  if (lab.dirty && AXES.length) {     // nothing to draw before the hello
     lab.dirty = false;
     drawStatus();
     drawRobot();

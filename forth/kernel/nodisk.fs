@@ -1,3 +1,0 @@
-\ forth/kernel/nodisk.fs: used only while forth/kernel/disk.fs does not exist.
-: BLOCK  ( n -- a )  DROP -35 THROW ;  \ BLOCK
-: (BLOCK)  ( n -- a )  BLOCK ;

@@ -1,0 +1,72 @@
+/* devices.h: what the project's SIMH device files share (glue only; the
+   physics is plant.h). See machine_sys.c for how they join SIMH. */
+#ifndef DEVICES_H
+#define DEVICES_H
+
+#include "pdp11_defs.h"
+#include "plant.h"
+#include "gripper.h"
+
+/* Time base (time_base.c): simulated time = executed instructions / rate. */
+extern int32 clock_rate;                 /* instructions per simulated second */
+double clock_time (void);                /* simulated seconds since power-up */
+int32 clock_share (int32 per_second, int32 *acc);  /* next interval of an exact n/s series */
+void clock_rescale (UNIT *uptr, int32 old_rate);   /* keep an event's simulated time */
+typedef void (*clock_rate_hook) (int32 old_rate);
+void clock_on_rate_change (clock_rate_hook before, clock_rate_hook after);
+void clock_set_rate (int32 rate);                  /* SET CLK RATE: hooks, new base */
+
+/* Pacing to the host's clock (wall_pacer.c), for the devices asked to. */
+typedef struct { int held; double wall0, sim0; } wall_pacer;
+double wall_seconds (void);                        /* the host's monotonic clock */
+void wall_pacer_pace (wall_pacer *p, double speed, double slack_s);  /* sleep while ahead */
+void wall_pacer_drop (wall_pacer *p);              /* the next call takes a new reference */
+
+/* The clock (kw11l.c): its part of a rate change. */
+void kwl_rate_changed (int32 old_rate);
+
+/* Plant glue (plant_dev.c): the plant as the bus devices see it. */
+extern plant robot_plant;
+void plant_dev_catch_up (void);                   /* integrate up to now */
+void plant_dev_dac (int axis, int code);          /* AAV11-A wrote a channel */
+void plant_dev_run_lines (int lines);             /* DRV11 OUTBUF bits 3:0 */
+uint16 plant_dev_counter (int axis);              /* DRV11 INBUF */
+extern const char plant_dev_columns[];            /* the plant's row: its CSV header */
+void plant_dev_write_row (FILE *f, int axis);     /* one row (trace, LAB P rows) */
+extern gripper robot_gripper;
+void plant_dev_gripper_lines (int step, int dir);  /* DRV11 OUTBUF bits 4, 5 */
+int plant_dev_gripper_contact (void);             /* DRV11 REQ B */
+void plant_dev_power (int on);                    /* the amplifier rack's switch */
+int plant_dev_powered (void);
+void plant_dev_on_lines_changed (void (*hook) (void));  /* told when a SET moves a line */
+void drv11_lines_changed (void);                  /* REQ lines may have moved */
+void plant_dev_init (void);
+void plant_dev_rate_changing (int32 old_rate);    /* integrate up to now, old time */
+void plant_dev_rate_changed (int32 old_rate);     /* pending samples keep their times */
+void plant_dev_command_done (void);               /* after each SCP command */
+
+/* Text files written by a device (text_attach.c): `what` starts the error message. */
+t_stat device_attach_text (UNIT *uptr, char *cptr, const char *what);
+void device_detach_text (UNIT *uptr);
+
+/* EXAMINE/DEPOSIT at 160000-177777 reach the I/O page (io_page_examine.c). */
+void io_page_examine_install (void);
+
+/* Console input pacing (console_pacing.c). */
+void console_pacing_install (void);
+void console_pacing_rate_changed (int32 old_rate);
+
+/* RL02 write-through (rl_durable.c). */
+void rl_durable_install (void);
+
+/* The lab bench's device (lab.c): its part of a rate change. */
+void lab_rate_changed (int32 old_rate);
+
+extern DEVICE kwl_dev, drv_dev, aav_dev, plant_dev, lab_dev;
+
+/* Byte writes (SIMH passes the byte in data<7:0>, PA<0> says which half). */
+#define MERGE_BYTE(old, data, pa, access) \
+    (((access) == WRITEB) ? (((pa) & 1) ? (((old) & 0377) | (((data) & 0377) << 8)) \
+                                        : (((old) & ~0377) | ((data) & 0377))) : (data))
+
+#endif

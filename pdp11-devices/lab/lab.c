@@ -1,0 +1,412 @@
+/* lab.c: the lab bench's window onto the running machine (SIMH device LAB).
+   No bus registers: the program cannot see it. It reads memory words, paces
+   the run to the wall clock, and pauses it, all at the 60 Hz tick boundaries.
+
+   ATTACH LAB path: rows go to `path` (a FIFO the lab server reads, or a
+   file); commands are read, when it exists, from the FIFO `path.ctl`.
+   Attach before the machine starts (the lab's boot script does): its ticks
+   then fall on the KW11-L's, once every RATE/60 instructions (exactly, when
+   RATE is a multiple of 240, as the default 300000 is).
+   DETACH LAB closes both and ends any pause.
+
+   Rows, one per line, numbers in decimal:
+     W,time_s,tick,w0,w1,...   at every tick: simulated seconds, the tick's
+                               number since the attach, the watched words (0..65535)
+     P,time_s,axis,dac,vcmd,vel,pos,counter,grip,contact,missed
+                               the plant, per axis, four times a tick: the
+                               plant trace's row (plant_dev_write_row; SHOW
+                               PLANT LAYOUT names its columns)
+     A,a0,a1,...               the watched addresses (octal), when they change
+     S,time_s,state,speed,power
+                               state run|pause, the amplifier rack on|off
+                               (PLANT POWER), after every command
+     M,addr,w0,...             memory (addr octal, up to 64 words a row): a dump
+   Commands, one per line:
+     speed X     pace at X times the 11/23's (RATE instructions per wall
+                 second), 0 < X <= 1000; 0 = full speed (the power-up setting)
+     pause       stop simulated time at the next tick (the plant stops with it)
+     run         go on
+     step        one tick more, then pause again
+     watch a...  octal even addresses below 160000 (at most 64); none = clear
+     dump a n    n words from octal address a (at most 28672)
+     power on|off  the amplifier rack's switch (SET PLANT POWER), between
+                 two ticks like every command
+   A bad command is answered by a row "E,what" and changes nothing.
+
+   Reporting: up to ten times the 11/23's pace every tick is reported. Faster
+   than that (full speed) a tick's W and P rows are written only when 1/60 s
+   of wall time has passed since the last reported tick, so the simulator
+   formats and writes about 60 ticks a wall second whatever its speed: the
+   page sees snapshots, and the run loses little to its observer. Between two
+   reported ticks the device looks (at commands, at the wall clock) at about
+   two ticks, at most 60 ticks (1 simulated second) apart: a pause then
+   stops time at the tick it looks at next.
+
+   Determinism: the wall clock only decides when the host sleeps; what the
+   machine does at each instruction count is the same at any speed and with
+   any pauses. While paused the simulator waits for commands, so typed keys
+   (^E too) wait in the terminal until the run goes on. When the command FIFO
+   loses its writer (the lab server exited) a pause ends by itself.
+
+   SET LAB SPEED=X as the command; SHOW LAB: state, speed, watched words. */
+#include "devices.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <unistd.h>
+
+#define TICKS_PER_S  60
+#define SUBSAMPLES   4                  /* plant samples per tick */
+#define REPORT_S     (1.0 / 60)         /* wall seconds between ticks reported, when fast */
+#define REPORT_ALL   10.0               /* up to this speed every tick is reported */
+#define SKIP_MAX     60                 /* ticks passed over at most, when fast */
+#define WATCH_MAX    64
+#define DUMP_ROW     64
+#define MEM_TOP      0160000            /* the I/O page starts here */
+#define SPEED_MAX    1000.0
+#define LATE_S       0.25               /* further behind the wall than this: a new reference */
+#define CMD_MAX      1024
+
+extern uint16 *M;
+
+static double speed;                    /* 0 = full speed */
+static int paused, steps;
+static int32 sample_acc;
+static int sub;                         /* sample within the tick, 0 at the tick */
+static int reporting;                   /* this tick's rows are written */
+static double reported_wall;            /* when the last reported tick was */
+static uint32 reported_tick;
+static int32 skip = 1;                  /* ticks from one look to the next, when fast */
+static uint32 tick_no;
+static int ctl_fd = -1;
+static char cmd_buf[CMD_MAX];
+static int cmd_len;
+static int32 watch[WATCH_MAX];
+static int watch_n;
+static wall_pacer pacer;                 /* wall_pacer.c */
+
+static t_stat lab_svc (UNIT *uptr);
+static t_stat lab_attach (UNIT *uptr, char *cptr);
+static t_stat lab_detach (UNIT *uptr);
+static t_stat lab_set_speed (UNIT *uptr, int32 val, char *cptr, void *desc);
+static t_stat lab_show (FILE *st, UNIT *uptr, int32 val, void *desc);
+
+static UNIT lab_unit = { UDATA (&lab_svc, UNIT_ATTABLE, 0) };
+
+static MTAB lab_mod[] = {
+    { MTAB_XTD|MTAB_VDV, 0, "STATE", "SPEED", &lab_set_speed, &lab_show, NULL },
+    { 0 }
+};
+
+DEVICE lab_dev = {
+    "LAB", &lab_unit, NULL, lab_mod,
+    1, 10, 31, 1, 8, 16,
+    NULL, NULL, NULL,
+    NULL, &lab_attach, &lab_detach,
+    NULL, 0
+};
+
+static void rebase (void)                /* pace from here on */
+{
+    wall_pacer_drop (&pacer);
+}
+
+static FILE *out (void)
+{
+    return (lab_unit.flags & UNIT_ATT) ? lab_unit.fileref : NULL;
+}
+
+static void say_state (void)
+{
+    if (out ())
+        fprintf (out (), "S,%.6f,%s,%g,%s\n", clock_time (), paused ? "pause" : "run", speed,
+                 plant_dev_powered () ? "on" : "off");
+}
+
+static void say_watch (void)
+{
+    if (!out ()) return;
+    fputc ('A', out ());
+    for (int i = 0; i < watch_n; i++)
+        fprintf (out (), ",%o", watch[i]);
+    fputc ('\n', out ());
+}
+
+static const char *parse_speed (const char *text, double *x)
+{
+    char *end;
+    double v = strtod (text, &end);
+    while (*end == ' ') end++;
+    if (end == text || *end != 0 || !(v >= 0 && v <= SPEED_MAX))
+        return "speed takes a number from 0 (full speed) to 1000 (times the 11/23's pace)";
+    *x = v;
+    return NULL;
+}
+
+static int parse_address (const char *word, int32 *a)
+{
+    char *end;
+    long v = strtol (word, &end, 8);
+    if (end == word || *end != 0 || v < 0 || v >= MEM_TOP || (v & 1)) return 0;
+    *a = (int32) v;
+    return 1;
+}
+
+static const char *set_watch (char *args)
+{
+    int32 list[WATCH_MAX];
+    int n = 0;
+    for (char *w = strtok (args, " "); w; w = strtok (NULL, " ")) {
+        if (n == WATCH_MAX) return "watch takes at most 64 addresses";
+        if (!parse_address (w, &list[n++]))
+            return "watch takes even octal addresses below 160000";
+    }
+    memcpy (watch, list, sizeof list);
+    watch_n = n;
+    say_watch ();
+    return NULL;
+}
+
+static const char *dump (char *args)
+{
+    char *a_text = strtok (args, " "), *n_text = strtok (NULL, " "), *end;
+    int32 a;
+    long n = n_text ? strtol (n_text, &end, 10) : -1;
+    if (!a_text || !parse_address (a_text, &a) || n < 1 || *end != 0
+        || a + 2 * n > MEM_TOP || strtok (NULL, " "))
+        return "dump takes an even octal address and a count of words inside memory";
+    for (long i = 0; i < n; i++) {
+        if (i % DUMP_ROW == 0)
+            fprintf (out (), "%sM,%o", i ? "\n" : "", (int) (a + 2 * i));
+        fprintf (out (), ",%d", M[(a >> 1) + i]);
+    }
+    fputc ('\n', out ());
+    return NULL;
+}
+
+static void command (char *line)
+{
+    const char *why = NULL;
+    char *args = strchr (line, ' ');
+    if (args) *args++ = 0; else args = line + strlen (line);
+    if (strcmp (line, "speed") == 0) {
+        if ((why = parse_speed (args, &speed)) == NULL) rebase ();
+    } else if (strcmp (line, "pause") == 0)
+        paused = 1;
+    else if (strcmp (line, "run") == 0)
+        paused = 0, steps = 0;
+    else if (strcmp (line, "step") == 0)
+        steps++;
+    else if (strcmp (line, "watch") == 0)
+        why = set_watch (args);
+    else if (strcmp (line, "dump") == 0)
+        why = dump (args);
+    else if (strcmp (line, "power") == 0 && (strcmp (args, "on") == 0 || strcmp (args, "off") == 0))
+        plant_dev_power (strcmp (args, "on") == 0);
+    else if (strcmp (line, "power") == 0)
+        why = "power takes on or off";
+    else if (*line)
+        why = "commands: speed X, pause, run, step, watch ADDR..., dump ADDR N, power on|off";
+    if (why && out ())
+        fprintf (out (), "E,%s\n", why);
+    say_state ();
+}
+
+/* Read what the server wrote; 0 when it has closed its end. */
+static int read_commands (void)
+{
+    ssize_t got;
+    if (ctl_fd < 0) return 0;
+    while ((got = read (ctl_fd, cmd_buf + cmd_len, CMD_MAX - 1 - cmd_len)) > 0) {
+        char *nl;
+        cmd_len += (int) got;
+        cmd_buf[cmd_len] = 0;
+        while ((nl = strchr (cmd_buf, '\n')) != NULL) {
+            *nl = 0;
+            command (cmd_buf);
+            cmd_len -= (int) (nl + 1 - cmd_buf);
+            memmove (cmd_buf, nl + 1, cmd_len + 1);
+        }
+        if (cmd_len == CMD_MAX - 1) cmd_len = 0;      /* an overlong line: dropped */
+    }
+    return got != 0 || errno == EAGAIN;
+}
+
+static void write_sample (void)
+{
+    fprintf (out (), "W,%.6f,%u", clock_time (), tick_no);
+    for (int i = 0; i < watch_n; i++)
+        fprintf (out (), ",%d", M[watch[i] >> 1]);
+    fputc ('\n', out ());
+}
+
+static void write_plant (void)
+{
+    plant_dev_catch_up ();
+    for (int i = 0; i < PLANT_AXES; i++) {
+        fputs ("P,", out ());
+        plant_dev_write_row (out (), i);
+    }
+}
+
+/* Fast runs: a tick is reported when 1/60 s of wall time has passed since the
+   last one, and the device looks at about two ticks per reported one (at most
+   SKIP_MAX apart), so it adds one event a simulated second, not 240, to a run
+   that idles in WAIT, where SIMH's time leaps from event to event. */
+static int report_this_tick (void)
+{
+    double now;
+    if (speed > 0 && speed <= REPORT_ALL) {
+        skip = 1;
+        return 1;
+    }
+    now = wall_seconds ();
+    if (now - reported_wall < REPORT_S)
+        return 0;
+    skip = (int32) (tick_no - reported_tick) / 2;
+    skip = skip < 1 ? 1 : (skip > SKIP_MAX ? SKIP_MAX : skip);
+    reported_wall = now;
+    reported_tick = tick_no;
+    return 1;
+}
+
+static void flush_all (void)
+{
+    fflush (out ());
+}
+
+static void pace (void)
+{
+    if (speed <= 0) return;
+    wall_pacer_pace (&pacer, speed, LATE_S);
+}
+
+static void wait_while_paused (void)
+{
+    struct pollfd p = { ctl_fd, POLLIN, 0 };
+    if (!paused || steps > 0) return;
+    say_state ();
+    flush_all ();
+    while (paused && steps == 0) {
+        if (poll (&p, 1, 200) > 0 && !read_commands ())
+            paused = 0;                         /* the server is gone: run on */
+        flush_all ();
+    }
+    rebase ();
+}
+
+/* The next event: the next sample, or, when this tick is not reported, the next
+   tick the device looks at (the samples' intervals added up, so the series
+   stays exact and every look falls on a tick). */
+static void schedule (UNIT *uptr)
+{
+    int32 n = clock_share (TICKS_PER_S * SUBSAMPLES, &sample_acc);
+    if (!reporting) {
+        while (sub < SUBSAMPLES - 1) {              /* to the next tick */
+            n += clock_share (TICKS_PER_S * SUBSAMPLES, &sample_acc);
+            sub++;
+        }
+        for (int32 k = 1; k < skip; k++) {          /* and over skip - 1 more */
+            for (int i = 0; i < SUBSAMPLES; i++)
+                n += clock_share (TICKS_PER_S * SUBSAMPLES, &sample_acc);
+            tick_no++;
+        }
+    }
+    sim_activate (uptr, n);
+}
+
+static t_stat lab_svc (UNIT *uptr)
+{
+    if (!out ()) return SCPE_OK;
+    sub = (sub + 1) % SUBSAMPLES;
+    if (sub == 0) {                             /* a 60 Hz tick */
+        tick_no++;
+        read_commands ();
+        if (steps > 0 && --steps == 0) paused = 1;
+        reporting = report_this_tick () || paused || steps > 0;
+        if (reporting)
+            write_sample ();
+    }
+    if (reporting)
+        write_plant ();
+    if (sub == 0) {
+        wait_while_paused ();
+        if (reporting)
+            flush_all ();
+        pace ();
+    }
+    schedule (uptr);
+    return SCPE_OK;
+}
+
+void lab_rate_changed (int32 old_rate)
+{
+    clock_rescale (&lab_unit, old_rate);        /* the next sample keeps its time */
+    sample_acc = 0;
+    rebase ();
+}
+
+static t_stat lab_attach (UNIT *uptr, char *cptr)
+{
+    t_stat r;
+    char *ctl;
+    if (uptr->flags & UNIT_ATT)
+        lab_detach (uptr);
+    signal (SIGPIPE, SIG_IGN);                  /* a vanished reader is no reason to stop */
+    if ((ctl = (char *) malloc (strlen (cptr) + 5)) == NULL)
+        return SCPE_MEM;
+    if ((r = device_attach_text (uptr, cptr, "LAB: cannot write")) != SCPE_OK) {
+        free (ctl);
+        return r;
+    }
+    sprintf (ctl, "%s.ctl", cptr);
+    ctl_fd = open (ctl, O_RDONLY | O_NONBLOCK);
+    free (ctl);
+    tick_no = reported_tick = 0;
+    skip = 1;
+    sample_acc = 0;
+    sub = 0;
+    reporting = 1;
+    cmd_len = 0;
+    rebase ();
+    say_watch ();
+    say_state ();
+    sim_activate (uptr, clock_share (TICKS_PER_S * SUBSAMPLES, &sample_acc));
+    return SCPE_OK;
+}
+
+static t_stat lab_detach (UNIT *uptr)
+{
+    if (!(uptr->flags & UNIT_ATT))
+        return SCPE_OK;
+    sim_cancel (uptr);
+    device_detach_text (uptr);
+    if (ctl_fd >= 0) close (ctl_fd);
+    ctl_fd = -1;
+    paused = steps = 0;
+    return SCPE_OK;
+}
+
+static t_stat lab_set_speed (UNIT *uptr, int32 val, char *cptr, void *desc)
+{
+    double x;
+    const char *why = cptr ? parse_speed (cptr, &x) : "SPEED needs a value";
+    if (why) {
+        printf ("LAB: %s\n", why);
+        return SCPE_ARG;
+    }
+    speed = x;
+    rebase ();
+    return SCPE_OK;
+}
+
+static t_stat lab_show (FILE *st, UNIT *uptr, int32 val, void *desc)
+{
+    fprintf (st, "%s, speed=%g%s, %d words watched", paused ? "paused" : "running", speed,
+             speed > 0 ? "x" : " (full)", watch_n);
+    for (int i = 0; i < watch_n; i++)
+        fprintf (st, "%s%06o=%06o", i ? " " : ": ", watch[i], M[watch[i] >> 1]);
+    return SCPE_OK;
+}

@@ -1,0 +1,435 @@
+/* plant_dev.c: SIMH glue for the four-axis plant and the gripper (SIMH
+   device PLANT). The physics is plant.c and gripper.c; this file only
+   connects them to simulated time, the bus devices (aav11.c, drv11.c: the
+   gripper's STEP and DIR lines are DRV11 OUTBUF bits 4 and 5, its contact
+   switch is REQ B), SET/SHOW and the trace file. No bus registers.
+
+   SET (one axis selected by its letter, then any of its parameters):
+     SET PLANT X TAU=20             SET PLANT Z KV=19.53,OFFSET=45
+     parameters: KV (counts/s per code), TAU (ms), AMAX (counts/s^2),
+     VMAX (counts/s), OFFSET (codes; restarts that axis's walk), PMIN, PMAX
+     (end stops, counts), WALK (offset random walk, codes per sqrt(s)),
+     POS (counts: puts the axis there at rest; a running counter counts it)
+     device-wide: SET PLANT SEED=n (random walk seed, default 1983),
+     SET PLANT SAMPLE=n (trace samples per simulated second, 0..1000,
+     default 60; 0 = rows at DAC writes only), SET PLANT POWER=ON|OFF (the
+     amplifier rack's power switch, plant.h; on at power-up of the simulator;
+     the interactive console switches it off at boot);
+     the gripper (the project's continuation, docs/continuation.md):
+     SET PLANT GRIPPER OBJECT=1.0   (an object that wide between the fingers,
+     inches; 0 = none; refused while the fingers are closer than that),
+     PULLOUT=300 (steps/s the motor follows), OPENING=2 (inches, 0..2);
+     PARTX=, PARTY=, PARTZ= (counts, as the counters read) make the object a
+     part at that place, between the fingers only when the hand is there
+     and carried while gripped (gripper.h); OBJECT=0 removes it
+   A rejected value (non-number, out of range, no axis selected) prints why,
+   returns a SIMH error and leaves that parameter as it was; modifiers are
+   applied left to right. The selection lasts until the end of the command.
+   SHOW PLANT: per axis position (counts and inches or degrees), velocity,
+   DAC code, commanded velocity, offset, end stop, run line, counter, then
+   the parameters, then a line for the gripper (opening, object, contact,
+   step pulses requested, missed, blocked, pull-out rate, its two lines,
+   and where a placed part is).
+   SHOW PLANT LAYOUT (only when named), for programs: the row's columns, then
+   per axis its letter, display unit, counts per unit and end stops:
+     columns time_s,axis,dac,vcmd,vel,pos,counter,grip,contact,missed
+     axis X in 800 -9600 9600
+   ATTACH PLANT file.csv: writes the trace (truncating the file), DETACH
+   PLANT closes it. The plant's row (plant_dev_write_row, also the LAB
+   device's P rows): time_s,axis,dac,vcmd,vel,pos,counter (simulated
+   seconds, X/Y/Z/T, code, counts/s, counts/s, counts, counter as a signed
+   16-bit number), then the gripper's state on every row, whatever the axis:
+   grip (opening, inches), contact (0/1), missed (step pulses missed so far). A row for all four axes at every sample (SAMPLE per second,
+   at exact instruction counts from the ATTACH) and a row for the axis written
+   at every DAC write. Same program, same trace, byte for byte. */
+#include "devices.h"
+
+#include <errno.h>
+#include <math.h>
+
+#define DEFAULT_SEED   1983
+#define DEFAULT_SAMPLE 60
+#define SAMPLE_MAX     1000
+
+plant robot_plant;
+gripper robot_gripper;
+#define SEL_GRIPPER PLANT_AXES
+static int sel_axis = -1;               /* axis (or SEL_GRIPPER) named earlier in this SET command */
+static int32 sample_hz = DEFAULT_SAMPLE;
+static int32 sample_acc;
+static void (*lines_changed) (void);    /* the bus device whose REQ lines the plant drives */
+
+static t_stat plant_svc (UNIT *uptr);
+static t_stat plant_reset (DEVICE *dptr);
+static t_stat plant_attach (UNIT *uptr, char *cptr);
+static t_stat plant_detach (UNIT *uptr);
+static t_stat plant_select (UNIT *uptr, int32 axis, char *cptr, void *desc);
+static t_stat plant_set (UNIT *uptr, int32 which, char *cptr, void *desc);
+static t_stat plant_set_gripper (UNIT *uptr, int32 which, char *cptr, void *desc);
+static t_stat plant_set_seed (UNIT *uptr, int32 val, char *cptr, void *desc);
+static t_stat plant_set_sample (UNIT *uptr, int32 val, char *cptr, void *desc);
+static t_stat plant_set_power_switch (UNIT *uptr, int32 val, char *cptr, void *desc);
+static t_stat plant_show_global (FILE *st, UNIT *uptr, int32 val, void *desc);
+static t_stat plant_show_axes (FILE *st, UNIT *uptr, int32 val, void *desc);
+static t_stat plant_show_layout (FILE *st, UNIT *uptr, int32 val, void *desc);
+
+enum { G_OBJECT, G_PULLOUT, G_OPENING, G_PARTX, G_PARTY, G_PARTZ };
+static const char *const gripper_param_names[] = {
+    "OBJECT", "PULLOUT", "OPENING", "PARTX", "PARTY", "PARTZ"
+};
+
+static UNIT plant_unit = { UDATA (&plant_svc, UNIT_ATTABLE, 0) };
+
+#define PARAM(p) { MTAB_XTD|MTAB_VDV, p, NULL, #p + 2, &plant_set, NULL, NULL }
+static MTAB plant_mod[] = {
+    /* the axis letters first: "T" must select an axis before it can match TAU */
+    { MTAB_XTD|MTAB_VDV, AXIS_X, NULL, "X", &plant_select, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, AXIS_Y, NULL, "Y", &plant_select, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, AXIS_Z, NULL, "Z", &plant_select, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, AXIS_T, NULL, "T", &plant_select, NULL, NULL },
+    PARAM (P_KV), PARAM (P_TAU), PARAM (P_AMAX), PARAM (P_VMAX), PARAM (P_OFFSET),
+    PARAM (P_PMIN), PARAM (P_PMAX), PARAM (P_WALK), PARAM (P_POS),
+    { MTAB_XTD|MTAB_VDV, SEL_GRIPPER, NULL, "GRIPPER", &plant_select, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, G_OBJECT, NULL, "OBJECT", &plant_set_gripper, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, G_PULLOUT, NULL, "PULLOUT", &plant_set_gripper, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, G_OPENING, NULL, "OPENING", &plant_set_gripper, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, G_PARTX, NULL, "PARTX", &plant_set_gripper, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, G_PARTY, NULL, "PARTY", &plant_set_gripper, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, G_PARTZ, NULL, "PARTZ", &plant_set_gripper, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, 0, NULL, "SEED", &plant_set_seed, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, 0, NULL, "SAMPLE", &plant_set_sample, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, 0, NULL, "POWER", &plant_set_power_switch, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, 0, "SETTINGS", NULL, NULL, &plant_show_global, NULL },
+    { MTAB_XTD|MTAB_VUN, 0, "AXES", NULL, NULL, &plant_show_axes, NULL },
+    { MTAB_XTD|MTAB_VDV|MTAB_NMO, 0, "LAYOUT", NULL, NULL, &plant_show_layout, NULL },
+    { 0 }
+};
+
+DEVICE plant_dev = {
+    "PLANT", &plant_unit, NULL, plant_mod,
+    1, 10, 31, 1, 10, 8,
+    NULL, NULL, &plant_reset,
+    NULL, &plant_attach, &plant_detach,
+    NULL, 0
+};
+
+void plant_dev_init (void)
+{
+    plant_init (&robot_plant, DEFAULT_SEED);
+    gripper_init (&robot_gripper);
+}
+
+/* The hand where the FORTH sees it: each axis's counter reading, unwrapped. */
+static void hand_position (double hand[3])
+{
+    for (int i = 0; i < 3; i++) {
+        const plant_axis *a = &robot_plant.ax[i];
+        hand[i] = a->run ? a->p - a->p0 : a->p;
+    }
+}
+
+void plant_dev_catch_up (void)
+{
+    double hand[3];
+    plant_advance (&robot_plant, clock_time ());
+    if (robot_gripper.part) {                    /* only a placed part cares where the hand is */
+        hand_position (hand);
+        gripper_hand_at (&robot_gripper, hand);
+    }
+}
+
+void plant_dev_on_lines_changed (void (*hook) (void))
+{
+    lines_changed = hook;
+}
+
+const char plant_dev_columns[] = "time_s,axis,dac,vcmd,vel,pos,counter,grip,contact,missed";
+
+void plant_dev_write_row (FILE *f, int axis)
+{
+    const plant_axis *a = &robot_plant.ax[axis];
+    fprintf (f, "%.9f,%c,%d,%.3f,%.3f,%.3f,%d,%.2f,%d,%lu\n", robot_plant.now,
+             plant_axis_names[axis], a->code, plant_vcmd (&robot_plant, axis), a->v, a->p,
+             (int) (int16) plant_counter (&robot_plant, axis), gripper_opening (&robot_gripper),
+             gripper_contact (&robot_gripper), robot_gripper.missed);
+}
+
+static void trace_row (int axis)
+{
+    plant_dev_write_row (plant_unit.fileref, axis);
+}
+
+void plant_dev_dac (int axis, int code)
+{
+    plant_dev_catch_up ();
+    plant_set_code (&robot_plant, axis, code);
+    if (plant_unit.flags & UNIT_ATT)
+        trace_row (axis);
+}
+
+void plant_dev_run_lines (int lines)
+{
+    plant_dev_catch_up ();
+    for (int i = 0; i < PLANT_AXES; i++)
+        plant_set_run (&robot_plant, i, (lines >> i) & 1);
+}
+
+void plant_dev_gripper_lines (int step, int dir)
+{
+    plant_dev_catch_up ();
+    gripper_lines (&robot_gripper, clock_time (), step, dir);
+}
+
+int plant_dev_gripper_contact (void)
+{
+    return gripper_contact (&robot_gripper);
+}
+
+uint16 plant_dev_counter (int axis)
+{
+    plant_dev_catch_up ();
+    return plant_counter (&robot_plant, axis);
+}
+
+void plant_dev_rate_changing (int32 old_rate)  /* still in the old time */
+{
+    plant_dev_catch_up ();
+}
+
+void plant_dev_rate_changed (int32 old_rate)
+{
+    clock_rescale (&plant_unit, old_rate);
+    sample_acc = 0;
+}
+
+void plant_dev_command_done (void)
+{
+    sel_axis = -1;
+}
+
+static void schedule_sample (void)
+{
+    sim_cancel (&plant_unit);
+    sample_acc = 0;
+    if ((plant_unit.flags & UNIT_ATT) && sample_hz > 0)
+        sim_activate (&plant_unit, clock_share (sample_hz, &sample_acc));
+}
+
+static t_stat plant_svc (UNIT *uptr)
+{
+    if (!(uptr->flags & UNIT_ATT) || sample_hz == 0)
+        return SCPE_OK;
+    plant_dev_catch_up ();
+    for (int i = 0; i < PLANT_AXES; i++)
+        trace_row (i);
+    sim_activate (uptr, clock_share (sample_hz, &sample_acc));
+    return SCPE_OK;
+}
+
+static t_stat plant_reset (DEVICE *dptr)    /* bus INIT does not move the robot */
+{
+    if ((plant_unit.flags & UNIT_ATT) && sample_hz > 0 && !sim_is_active (&plant_unit))
+        schedule_sample ();
+    return SCPE_OK;
+}
+
+static t_stat plant_attach (UNIT *uptr, char *cptr)
+{
+    t_stat r;
+    if (uptr->flags & UNIT_ATT)
+        plant_detach (uptr);
+    if ((r = device_attach_text (uptr, cptr, "PLANT: cannot write the trace")) != SCPE_OK)
+        return r;
+    fprintf (uptr->fileref, "%s\n", plant_dev_columns);
+    plant_dev_catch_up ();
+    schedule_sample ();
+    return SCPE_OK;
+}
+
+static t_stat plant_detach (UNIT *uptr)
+{
+    if (!(uptr->flags & UNIT_ATT))
+        return SCPE_OK;
+    sim_cancel (uptr);
+    device_detach_text (uptr);
+    return SCPE_OK;
+}
+
+static int parse_number (const char *s, double *x)
+{
+    char *end;
+    if (s == NULL || *s == 0) return 0;
+    *x = strtod (s, &end);
+    return *end == 0;
+}
+
+static t_stat plant_select (UNIT *uptr, int32 axis, char *cptr, void *desc)
+{
+    if (cptr) {
+        printf ("PLANT: an axis letter or GRIPPER takes no value (SET PLANT X TAU=20)\n");
+        return SCPE_ARG;
+    }
+    sel_axis = axis;
+    return SCPE_OK;
+}
+
+static t_stat plant_set (UNIT *uptr, int32 which, char *cptr, void *desc)
+{
+    double x;
+    const char *why;
+    if (sel_axis == SEL_GRIPPER) {
+        printf ("PLANT: %s is an axis parameter; the gripper has OBJECT, PULLOUT and OPENING\n",
+                plant_param_names[which]);
+        return SCPE_ARG;
+    }
+    if (sel_axis < 0) {
+        printf ("PLANT: name the axis (X, Y, Z or T) before %s, e.g. SET PLANT X %s=...\n",
+                plant_param_names[which], plant_param_names[which]);
+        return SCPE_ARG;
+    }
+    if (!parse_number (cptr, &x)) {
+        printf ("PLANT: %s needs a number, e.g. SET PLANT %c %s=20\n", plant_param_names[which],
+                plant_axis_names[sel_axis], plant_param_names[which]);
+        return SCPE_ARG;
+    }
+    plant_dev_catch_up ();
+    if ((why = plant_set_param (&robot_plant, sel_axis, (plant_param) which, x)) != NULL) {
+        printf ("PLANT %c: %s\n", plant_axis_names[sel_axis], why);
+        return SCPE_ARG;
+    }
+    return SCPE_OK;
+}
+
+static t_stat plant_set_gripper (UNIT *uptr, int32 which, char *cptr, void *desc)
+{
+    double x;
+    const char *why;
+    int contact = gripper_contact (&robot_gripper);
+    if (sel_axis != SEL_GRIPPER) {
+        printf ("PLANT: %s belongs to the gripper: SET PLANT GRIPPER %s=...\n",
+                gripper_param_names[which], gripper_param_names[which]);
+        return SCPE_ARG;
+    }
+    if (!parse_number (cptr, &x)) {
+        printf ("PLANT: %s needs a number, e.g. SET PLANT GRIPPER %s=1\n",
+                gripper_param_names[which], gripper_param_names[which]);
+        return SCPE_ARG;
+    }
+    plant_dev_catch_up ();
+    why = which == G_OBJECT ? gripper_set_object (&robot_gripper, x)
+        : which == G_PULLOUT ? gripper_set_pullout (&robot_gripper, x)
+        : which == G_OPENING ? gripper_set_opening (&robot_gripper, x)
+        : gripper_place_part (&robot_gripper, which - G_PARTX, x);
+    if (why != NULL) {
+        printf ("PLANT GRIPPER: %s\n", why);
+        return SCPE_ARG;
+    }
+    plant_dev_catch_up ();                      /* the part may be at the hand */
+    if (gripper_contact (&robot_gripper) != contact && lines_changed)
+        lines_changed ();                       /* the contact switch is REQ B */
+    return SCPE_OK;
+}
+
+static t_stat plant_set_seed (UNIT *uptr, int32 val, char *cptr, void *desc)
+{
+    char *end;
+    unsigned long long s;
+    if (cptr == NULL || *cptr == 0 || *cptr == '-' ||
+        (errno = 0, s = strtoull (cptr, &end, 10), *end != 0) || errno) {
+        printf ("PLANT: SEED needs a whole number >= 0\n");
+        return SCPE_ARG;
+    }
+    plant_dev_catch_up ();
+    plant_reseed (&robot_plant, (uint64_t) s);
+    return SCPE_OK;
+}
+
+static t_stat plant_set_sample (UNIT *uptr, int32 val, char *cptr, void *desc)
+{
+    char *end;
+    long n;
+    if (cptr == NULL || *cptr == 0 || (n = strtol (cptr, &end, 10), *end != 0) ||
+        n < 0 || n > SAMPLE_MAX) {
+        printf ("PLANT: SAMPLE needs a whole number of samples per second, 0..%d\n", SAMPLE_MAX);
+        return SCPE_ARG;
+    }
+    sample_hz = (int32) n;
+    schedule_sample ();
+    return SCPE_OK;
+}
+
+static t_stat plant_set_power_switch (UNIT *uptr, int32 val, char *cptr, void *desc)
+{
+    int on;
+    if (cptr != NULL && strcmp (cptr, "ON") == 0)
+        on = 1;
+    else if (cptr != NULL && strcmp (cptr, "OFF") == 0)
+        on = 0;
+    else {
+        printf ("PLANT: POWER is ON or OFF (the amplifier rack's switch)\n");
+        return SCPE_ARG;
+    }
+    plant_dev_power (on);
+    return SCPE_OK;
+}
+
+void plant_dev_power (int on)
+{
+    plant_dev_catch_up ();                       /* what happened so far, with the old state */
+    plant_set_power (&robot_plant, on);
+}
+
+int plant_dev_powered (void)
+{
+    return robot_plant.power;
+}
+
+static t_stat plant_show_global (FILE *st, UNIT *uptr, int32 val, void *desc)
+{
+    fprintf (st, "seed=%llu, sample=%d/s, power=%s, time=%.6fs", (unsigned long long) robot_plant.seed,
+             sample_hz, robot_plant.power ? "on" : "off", clock_time ());
+    return SCPE_OK;
+}
+
+static t_stat plant_show_layout (FILE *st, UNIT *uptr, int32 val, void *desc)
+{
+    fprintf (st, "columns %s\n", plant_dev_columns);
+    for (int i = 0; i < PLANT_AXES; i++)
+        fprintf (st, "axis %c %s %.9g %.9g %.9g\n", plant_axis_names[i], plant_unit_name (i),
+                 plant_counts_per_unit (i), plant_get_param (&robot_plant, i, P_PMIN),
+                 plant_get_param (&robot_plant, i, P_PMAX));
+    return SCPE_OK;
+}
+
+static t_stat plant_show_axes (FILE *st, UNIT *uptr, int32 val, void *desc)
+{
+    plant_dev_catch_up ();
+    fprintf (st, "\n  axis  pos(counts)  position      vel(c/s)  dac   vcmd(c/s)  offset   stop   run counter");
+    for (int i = 0; i < PLANT_AXES; i++) {
+        const plant_axis *a = &robot_plant.ax[i];
+        int stop = plant_at_stop (&robot_plant, i);
+        fprintf (st, "\n  %c   %11.3f %10.4f %-3s %10.3f  %04d %10.3f %8.3f  %-5s  %d  %6d",
+                 plant_axis_names[i], a->p, a->p / plant_counts_per_unit (i), plant_unit_name (i),
+                 a->v, a->code, plant_vcmd (&robot_plant, i), plant_offset (&robot_plant, i),
+                 stop > 0 ? "upper" : (stop < 0 ? "lower" : "-"), a->run,
+                 (int) (int16) plant_counter (&robot_plant, i));
+    }
+    fprintf (st, "\n  axis  KV        TAU(ms)  AMAX       VMAX      PMIN       PMAX       WALK");
+    for (int i = 0; i < PLANT_AXES; i++)
+        fprintf (st, "\n  %c     %-9g %-8g %-10g %-9g %-10g %-10g %g", plant_axis_names[i],
+                 plant_get_param (&robot_plant, i, P_KV), plant_get_param (&robot_plant, i, P_TAU),
+                 plant_get_param (&robot_plant, i, P_AMAX), plant_get_param (&robot_plant, i, P_VMAX),
+                 plant_get_param (&robot_plant, i, P_PMIN), plant_get_param (&robot_plant, i, P_PMAX),
+                 plant_get_param (&robot_plant, i, P_WALK));
+    fprintf (st, "\n  gripper  opening %.2f in (%d steps), object %.3f in, contact %d, "
+             "pulses %lu, missed %lu, blocked %lu, pullout %g steps/s, step %d dir %d",
+             gripper_opening (&robot_gripper), robot_gripper.steps, robot_gripper.object_in,
+             gripper_contact (&robot_gripper), robot_gripper.pulses, robot_gripper.missed,
+             robot_gripper.blocked, robot_gripper.pullout, robot_gripper.step_line,
+             robot_gripper.dir_line);
+    if (robot_gripper.part)
+        fprintf (st, ", part at %.0f %.0f %.0f%s", robot_gripper.part_at[0],
+                 robot_gripper.part_at[1], robot_gripper.part_at[2],
+                 gripper_contact (&robot_gripper) ? " (held)" : "");
+    return SCPE_OK;
+}
