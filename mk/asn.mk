@@ -7,7 +7,7 @@
 #   make bench-asn   one learning step's cost: instructions, KDF11-A time
 #                    (part of make bench)
 asn-runs: $(BUILD)/kernel.lda $(BUILD)/pdp11 $(BUILD)/robot.dsk venv
-	@$(PY) -m harness.bench.asn_runs $(BUILD)/asn --figures docs/img
+	@$(PY) -m harness.figures.asn_runs $(BUILD)/asn --figures docs/img
 
 bench-asn: $(BUILD)/kernel.lda $(BUILD)/pdp11 $(BUILD)/robot.dsk venv
 	@$(PY) -m harness.bench.asn_bench

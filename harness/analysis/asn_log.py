@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 STEP = re.compile(r"^S (-?\d+) (-?\d+)(?: (\d+))? *$")
 SUMMARY = re.compile(r"^T (\d+) (\d+) (\d+) (-?\d+)(?: +ok)? *$")
 CLOCK = re.compile(r"time=([\d.]+)s")
-COLUMNS = ("trial", "steps", "reached_goal", "late_moves", "final_payoff",
+TRIAL_COLUMNS = ("trial", "steps", "reached_goal", "late_moves", "final_payoff",
            "start_x", "start_y", "end_x", "end_y", "end_time_s")
 
 
@@ -92,7 +92,7 @@ def actions_of(trials):
 
 def csv_text(trials, goal_size, goal=(1600, 1600)):
     """trials.csv: one row a trial."""
-    rows = [",".join(COLUMNS)]
+    rows = [",".join(TRIAL_COLUMNS)]
     for t in trials:
         (sx, sy, _), (ex, ey, _) = t.steps[0], t.steps[-1]
         reached = int(abs(ex - goal[0]) <= goal_size and abs(ey - goal[1]) <= goal_size)

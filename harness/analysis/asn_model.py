@@ -19,7 +19,9 @@ import re
 from dataclasses import dataclass, replace
 from pathlib import Path
 
-BLOCKS = Path(__file__).resolve().parents[2] / "blocks"
+from harness.machine.build import ROOT
+
+BLOCKS = ROOT / "blocks"
 PARAMETER_BLOCK = 1070
 FIELDS, FIELD_SPACING, FIELD_REACH = 9, 400, 800   # per axis; counts
 N_IN, N_OUT = 2 * FIELDS, 4     # the fields along x, then y; +x -x +y -y

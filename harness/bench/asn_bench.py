@@ -8,17 +8,15 @@ interrupt falls inside it.
 
     python -m harness.bench.asn_bench          (make bench-asn)
 """
-import shutil
 import sys
 import tempfile
-from pathlib import Path
 
 from harness.analysis import timing
 from harness.analysis.servo_timing import setup_script
-from harness.machine.robot import RATE, Robot
-from harness.machine.scripted_machine import feed_commands, read_kernel_map
-
-DISK = Path(__file__).resolve().parents[2] / "build" / "robot.dsk"
+from harness.machine.build import RATE, fresh_disk
+from harness.machine.kernel_layout import read_kernel_map
+from harness.machine.robot import Robot
+from harness.machine.scripted_machine import feed_commands
 REPEAT = 100
 LINES = ["1000 LOAD 1070 LOAD",
          ": Mark ( -- ) ;",
@@ -48,10 +46,8 @@ def counted(disk):
 
 def main():
     with tempfile.TemporaryDirectory(prefix="asn-bench-") as tmp:
-        disk = Path(tmp) / "robot.dsk"
-        shutil.copy(DISK, disk)
-        think, mark, per = counted(disk)
-        shutil.copy(DISK, disk)
+        think, mark, per = counted(fresh_disk(tmp))
+        disk = fresh_disk(tmp)
         # stopped at QUERY after the lines, Bench typed ahead into the ring
         sym = read_kernel_map()
         setup = setup_script(disk, LINES) + "\n".join(

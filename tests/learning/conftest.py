@@ -1,23 +1,17 @@
 """Fixtures for the ASN tests (blocks 1070-1078): the robot on a fresh copy
 of build/robot.dsk, driven in lock-step (harness/machine/robot.py)."""
-import shutil
-
 import pytest
 
-from harness.machine.machine import KERNEL, SIMULATOR
-from harness.machine.robot import MAP, Robot
-
-DISK = KERNEL.parent / "robot.dsk"
+from harness.machine.build import KERNEL, KERNEL_MAP, PDP11, PRISTINE_DISK, fresh_disk
+from harness.machine.robot import Robot
 
 
 @pytest.fixture
 def disk(tmp_path):
-    for need in (KERNEL, SIMULATOR, DISK, MAP):
+    for need in (KERNEL, PDP11, PRISTINE_DISK, KERNEL_MAP):
         if not need.exists():
             pytest.fail(f"build first: {need} (make)")
-    path = tmp_path / "rl0.dsk"
-    shutil.copy(DISK, path)
-    return path
+    return fresh_disk(tmp_path, "rl0.dsk")
 
 
 @pytest.fixture

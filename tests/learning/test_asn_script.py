@@ -5,7 +5,7 @@ import subprocess
 import sys
 
 from harness.analysis import asn_log, asn_model
-from harness.bench.asn_runs import LINE_LIMIT, script_text
+from harness.figures.asn_runs import LINE_LIMIT, script_text
 
 
 def scripted_csv(tmp_path, name, trials):

@@ -2,7 +2,7 @@
 reconstruction) learning to move the emulated robot on the printed 1983
 servo, by scripted runs (`python -m harness run`: lock-step, deterministic).
 
-    python -m harness.bench.asn_runs OUTDIR [--trials N] [--figures DIR]
+    python -m harness.figures.asn_runs OUTDIR [--trials N] [--figures DIR]
 
 Writes in OUTDIR the scripts, their transcripts, the learning run's plant
 trace (learn.trace.csv), and
