@@ -86,7 +86,7 @@ def paths_figure(trials, numbers, p, trace=None):
         x, y = zip(*t.path)
         ax.plot(x, y, color="tab:blue", lw=1, marker="o", ms=2.5, label="counters at each step")
         ax.plot(x[0], y[0], marker="s", color="black", ms=6, label="start")
-        ax.set_title(f"trial {t.number}: {t.n_steps} steps, {t.late} late moves", fontsize=10)
+        ax.set_title(f"trial {t.number}: {t.n_steps} steps, late moves: {t.late}", fontsize=10)
     axes[0].set_ylabel("y counter")
     handles, labels = axes[0].get_legend_handles_labels()
     fig.legend(handles, labels, fontsize=8, loc="outside lower center", ncols=3)
