@@ -8,6 +8,14 @@
 # build/pdp11-stock, except pdp11_sys.c, compiled again with its device table
 # renamed (stock_sim_devices): pdp11-devices/simh/machine_sys.c defines the table
 # SIMH uses (see its header).
+# build/pdp11-timed is the one exception: the same simulator with a copy of
+# pdp11_cpu.c patched by pdp11-devices/simh/pdp11_cpu_kdf11_time.patch, for SET
+# CLK TIMED (11/23 time: SIMH's CPU loop has no hook for a per-instruction time;
+# simh/kdf11_time.c says why and what). A separate binary because the patch's
+# test costs every instruction even with the mode off (5 % on the Sieve,
+# measured), and SIMH's files stay as shipped in the simulator everything else
+# runs. The KDF11-A times come from harness/analysis/kdf11.py, as a generated C
+# table.
 DEV_OBJ    := $(BUILD)/obj/devices
 DEV_DIR    := pdp11-devices
 DEV_KINDS  := bus plant lab simh
@@ -16,7 +24,13 @@ DEV_GLUE   := $(wildcard $(DEV_KINDS:%=$(DEV_DIR)/%/*.c))
 DEV_OBJS   := $(patsubst $(DEV_DIR)/%.c,$(DEV_OBJ)/%.o,$(DEV_GLUE))
 DEV_INCS   := -I $(DEV_DIR) $(DEV_KINDS:%=-I $(DEV_DIR)/%)
 ROBOT_SYS  := $(DEV_OBJ)/pdp11_sys_stock.o
+ROBOT_CPU  := $(DEV_OBJ)/pdp11_cpu_timed.o
+CPU_PATCH  := $(DEV_DIR)/simh/pdp11_cpu_kdf11_time.patch
+PATCHED_CPU := $(BUILD)/simh-patched/PDP11/pdp11_cpu.c
+GEN_DIR    := $(BUILD)/gen
+KDF11_TABLE := $(GEN_DIR)/kdf11_extra.h
 ROBOT_SIMH_OBJS := $(filter-out $(STOCK_OBJ)/PDP11/pdp11_sys.o,$(STOCK_OBJS)) $(ROBOT_SYS)
+TIMED_SIMH_OBJS := $(filter-out $(STOCK_OBJ)/PDP11/pdp11_cpu.o,$(ROBOT_SIMH_OBJS)) $(ROBOT_CPU)
 # Our own code gets warnings; SIMH's headers need its flags.
 DEV_CFLAGS := $(filter-out -w,$(SIMH_CFLAGS)) -Wall -Wno-unused-function
 PLANT_CFLAGS := -std=c99 -O2 -g -Wall -Wextra
@@ -25,6 +39,20 @@ $(ROBOT_SYS): $(SIMH_STAMP)
 	@mkdir -p $(dir $@)
 	@$(CC) $(SIMH_CFLAGS) -Dsim_devices=stock_sim_devices -c $(SIMH_SRC)/PDP11/pdp11_sys.c -o $@
 
+$(PATCHED_CPU): $(SIMH_STAMP) $(CPU_PATCH)
+	@mkdir -p $(dir $@)
+	@cp $(SIMH_SRC)/PDP11/pdp11_cpu.c $@.tmp
+	@patch -s --no-backup-if-mismatch $@.tmp $(CPU_PATCH) && mv $@.tmp $@
+
+$(ROBOT_CPU): $(PATCHED_CPU)
+	@mkdir -p $(dir $@)
+	@$(CC) $(SIMH_CFLAGS) -c $< -o $@
+
+$(KDF11_TABLE): harness/analysis/kdf11.py harness/analysis/kdf11_table.py | $(VENV)/.stamp
+	@$(PY) -m harness.analysis.kdf11_table $@
+
+$(DEV_OBJ)/simh/kdf11_time.o: $(KDF11_TABLE)
+
 # the pure mechanics (no SIMH types): strict flags, tested alone
 $(DEV_OBJ)/plant/plant.o $(DEV_OBJ)/plant/gripper.o: $(DEV_OBJ)/plant/%.o: $(DEV_DIR)/plant/%.c $(DEV_DIR)/plant/%.h
 	@mkdir -p $(dir $@)
@@ -32,10 +60,16 @@ $(DEV_OBJ)/plant/plant.o $(DEV_OBJ)/plant/gripper.o: $(DEV_OBJ)/plant/%.o: $(DEV
 
 $(DEV_OBJ)/%.o: $(DEV_DIR)/%.c $(DEV_HDRS) $(SIMH_STAMP)
 	@mkdir -p $(dir $@)
-	@$(CC) $(DEV_CFLAGS) $(DEV_INCS) -c $< -o $@
+	@$(CC) $(DEV_CFLAGS) $(DEV_INCS) -I $(GEN_DIR) -c $< -o $@
 
-$(BUILD)/pdp11: $(ROBOT_SIMH_OBJS) $(DEV_OBJS)
-	@echo "==> linking the robot's PDP-11/23 simulator: $@"
+# build/pdp11-plain: the simulator, -O2 (build/pdp11 is a copy of it, or with
+# PGO=1 of the profile-guided build/pdp11-guided: mk/pgo.mk).
+$(BUILD)/pdp11-plain: $(ROBOT_SIMH_OBJS) $(DEV_OBJS)
+	@echo "==> linking the robot's PDP-11/23 simulator (no profile guidance): $@"
+	@$(CC) -o $@ $^ $(SIMH_LIBS)
+
+$(BUILD)/pdp11-timed: $(TIMED_SIMH_OBJS) $(DEV_OBJS)
+	@echo "==> linking the robot's PDP-11/23 simulator with KDF11-A time (SET CLK TIMED): $@"
 	@$(CC) -o $@ $^ $(SIMH_LIBS)
 
 $(BUILD)/plant_test: tests/devices/plant_test.c $(DEV_OBJ)/plant/plant.o
@@ -45,9 +79,9 @@ $(BUILD)/gripper_test: tests/devices/gripper_test.c $(DEV_OBJ)/plant/gripper.o
 	@$(CC) $(PLANT_CFLAGS) -I $(DEV_DIR)/plant -o $@ $^ -lm
 
 # pdp11-stock too: the reference the benchmark and tests/test_simh_stock.py use.
-ALL_PRODUCTS += $(BUILD)/pdp11 $(BUILD)/plant_test $(BUILD)/gripper_test $(BUILD)/pdp11-stock
+ALL_PRODUCTS += $(BUILD)/pdp11 $(BUILD)/pdp11-plain $(BUILD)/pdp11-timed $(BUILD)/plant_test $(BUILD)/gripper_test $(BUILD)/pdp11-stock
 
-bench-devices: $(BUILD)/pdp11 $(BUILD)/pdp11-stock venv
+bench-devices: $(BUILD)/pdp11 $(BUILD)/pdp11-plain $(BUILD)/pdp11-guided $(BUILD)/pdp11-stock $(BUILD)/kernel.lda $(PRISTINE_DSK) venv
 	@$(PY) -m harness.bench.bench_devices
 BENCHES += bench-devices
 .PHONY: bench-devices

@@ -5,7 +5,9 @@
 #                            from the command line), of the regression suite and
 #                            of make test, the real-time factor, the idle console's
 #                            share of a core (part of make bench)
-HARNESS_NEEDS := $(BUILD)/pdp11 $(BUILD)/kernel.lda $(BUILD)/kernel.map $(PRISTINE_DSK) venv
+#   make bench-timed         SET CLK TIMED against harness timing's price, and the
+#                            FORTH's and the servo's figures in 11/23 time (part of make bench)
+HARNESS_NEEDS := $(BUILD)/pdp11 $(BUILD)/pdp11-timed $(BUILD)/kernel.lda $(BUILD)/kernel.map $(PRISTINE_DSK) venv
 
 regression: $(HARNESS_NEEDS)
 	@$(PY) -m harness regress
@@ -18,3 +20,10 @@ bench-harness: $(HARNESS_NEEDS)
 
 BENCHES += bench-harness
 .PHONY: regression regression-update bench-harness
+
+# SET CLK TIMED (pdp11-devices/simh/kdf11_time.c) against harness timing's price, and
+# the FORTH's and the servo's figures in both time bases (about 10 s)
+bench-timed: $(HARNESS_NEEDS)
+	@$(PY) -m harness.bench.timed_bench
+BENCHES += bench-timed
+.PHONY: bench-timed

@@ -4,5 +4,6 @@
 # never overwritten) are built first. Leave with BYE (blocks are flushed).
 #   make run FAST=1      full speed while the FORTH works, the 11/23's pace while it waits for a key
 #   make run TRACE=f.csv record the plant trace
-run: $(BUILD)/pdp11 $(BUILD)/kernel.lda $(BUILD)/kernel.map $(WORK_DSK) venv
-	@$(PY) -m harness console $(if $(FAST),--fast) $(if $(TRACE),--trace $(TRACE))
+#   make run TIMED=1     11/23 time: each instruction its KDF11-A time (SET CLK TIMED)
+run: $(BUILD)/pdp11 $(BUILD)/pdp11-timed $(BUILD)/kernel.lda $(BUILD)/kernel.map $(WORK_DSK) venv
+	@$(PY) -m harness console $(if $(FAST),--fast) $(if $(TRACE),--trace $(TRACE)) $(if $(TIMED),--timed)

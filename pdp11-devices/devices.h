@@ -22,6 +22,10 @@ double wall_seconds (void);                        /* the host's monotonic clock
 void wall_pacer_pace (wall_pacer *p, double speed, double slack_s);  /* sleep while ahead */
 void wall_pacer_drop (wall_pacer *p);              /* the next call takes a new reference */
 
+/* The KDF11-A's instruction times as the time base (kdf11_time.c, SET CLK TIMED). */
+extern int32 kdf11_timed;
+t_stat kdf11_time_set (int on);
+
 /* The clock (kw11l.c): its part of a rate change. */
 void kwl_rate_changed (int32 old_rate);
 
@@ -56,13 +60,16 @@ void io_page_examine_install (void);
 void console_pacing_install (void);
 void console_pacing_rate_changed (int32 old_rate);
 
+/* The scripted runs' stop at the prompt (prompt_cue.c). */
+void prompt_cue_install (void);
+
 /* RL02 write-through (rl_durable.c). */
 void rl_durable_install (void);
 
 /* The lab bench's device (lab.c): its part of a rate change. */
 void lab_rate_changed (int32 old_rate);
 
-extern DEVICE kwl_dev, drv_dev, aav_dev, plant_dev, lab_dev;
+extern DEVICE kwl_dev, drv_dev, aav_dev, plant_dev, lab_dev, cue_dev;
 
 /* Byte writes (SIMH passes the byte in data<7:0>, PA<0> says which half). */
 #define MERGE_BYTE(old, data, pa, access) \

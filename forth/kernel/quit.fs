@@ -145,8 +145,11 @@ CREATE ERROR-TEXTS  ( -- a )
 \ ---- QUIT --------------------------------------------------------------------------
 : .LOST  ( -- )  \ say so when the console ring overflowed
   RXLOST @ ?DUP IF CR U. ." characters lost: typed too far ahead" CR  0 RXLOST ! THEN ;
+\ AWAIT-LINE reads the DL11's RCSR, which a DL11 ignores: the cue at which a scripted
+\ run stops to type the next line (pdp11-devices/simh/prompt_cue.c), at no cost between
+CODE AWAIT-LINE  ( -- )  177560O @# TST,  NEXT,  END-CODE  \ prompts (no breakpoint)
 : QUERY  ( -- )  \ CORE EXT: a line from the terminal becomes the source
-  0 0 WHAT 2!  TIB TIB-SIZE 1- ACCEPT  TIB SWAP SRC 2!  0 >IN !  0 BLK !  0 SRC-ID !  SPACE .LOST ;
+  AWAIT-LINE  0 0 WHAT 2!  TIB TIB-SIZE 1- ACCEPT  TIB SWAP SRC 2!  0 >IN !  0 BLK !  0 SRC-ID !  SPACE .LOST ;
 : INTERPRET-LINE  ( -- )  QUERY INTERPRET ;
 : .PROMPT  ( -- )  \ gforth's: an open definition or structure says so
   STATE @ TEMP-DEPTH @ OR IF ."  compiled" ELSE ."  ok" THEN CR ;

@@ -5,8 +5,9 @@ simulated second by the line clock, whose handler does what the 1983 servo
 does with the I/O: per axis, select the counter on the DRV11, read it, write a
 velocity code to the AAV11-A: +-100 codes towards counter 0, so every axis
 keeps swinging about its start and the plant never rests. Variants:
-  plant active  build/pdp11, the handler's I/O goes to the DRV11 and AAV11-A
-  plant idle    build/pdp11, the same instructions on memory (plant untouched)
+  plant active  build/pdp11-plain, the handler's I/O goes to the DRV11 and AAV11-A
+  plant idle    build/pdp11-plain, the same instructions on memory (plant untouched)
+  guided        build/pdp11-guided (mk/pgo.mk), plant active
   stock         build/pdp11-stock, the idle program (the stock 11/23 has no
                 LKS register and forces clock interrupts on; the handler runs
                 at its wall-calibrated rate)
@@ -18,8 +19,9 @@ import sys
 import time
 
 from harness.analysis.pdp11prog import Program, check_listing
+from harness.bench import forth_host_speed
 from harness.machine import simh
-from harness.machine.build import PDP11, PDP11_STOCK, RATE
+from harness.machine.build import PDP11_STOCK, RATE
 from harness.machine.plant_rows import AXES
 
 STEPS = 100_000_000                                       # 333 simulated seconds
@@ -80,7 +82,7 @@ def best_rates(variants, rounds=ROUNDS):
 
 
 def main():
-    for sim in (PDP11, PDP11_STOCK):
+    for sim in (forth_host_speed.PLAIN, forth_host_speed.GUIDED, PDP11_STOCK):
         if not sim.exists():
             sys.exit(f"bench: {sim} missing: run make")
     active, idle, stock = program(io=True), program(io=False), program(io=False, clock=False)
@@ -88,16 +90,20 @@ def main():
         bad = check_listing(prog)
         if bad:
             sys.exit(f"bench: hand-assembled words disagree with SIMH: {bad}")
-    ips_active, ips_idle, ips_stock = best_rates([
-        (active, PDP11, "AAV11, X="), (idle, PDP11, ""), (stock, PDP11_STOCK, "")])
+    ips_active, ips_idle, ips_stock, ips_guided = best_rates([
+        (active, forth_host_speed.PLAIN, "AAV11, X="), (idle, forth_host_speed.PLAIN, ""),
+        (stock, PDP11_STOCK, ""), (active, forth_host_speed.GUIDED, "AAV11, X=")])
     print(f"devices benchmark: {STEPS:,} instructions per run, best of {ROUNDS}, taking turns")
-    print(f"  build/pdp11, clock + plant active : {ips_active / 1e6:8.2f} M instructions/s")
-    print(f"  build/pdp11, clock, plant idle    : {ips_idle / 1e6:8.2f} M instructions/s")
+    print(f"  build/pdp11-plain, clock + plant active : {ips_active / 1e6:8.2f} M instructions/s")
+    print(f"  build/pdp11-plain, clock, plant idle    : {ips_idle / 1e6:8.2f} M instructions/s")
     print(f"  build/pdp11-stock                 : {ips_stock / 1e6:8.2f} M instructions/s")
     print(f"  ratio active/stock {ips_active / ips_stock:.3f}, idle/stock "
           f"{ips_idle / ips_stock:.3f} (goal >= 0.9)")
     print(f"  real-time factor at {RATE} instructions/s: active {ips_active / RATE:.0f}x, "
           f"idle {ips_idle / RATE:.0f}x (simulated seconds per wall second)")
+    print(f"  build/pdp11-guided, clock + plant : {ips_guided / 1e6:8.2f} M instructions/s "
+          f"(guided/plain {ips_guided / ips_active:.3f}, guided/stock {ips_guided / ips_stock:.3f})")
+    forth_host_speed.report()
 
 
 if __name__ == "__main__":

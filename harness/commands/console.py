@@ -6,7 +6,8 @@ from pathlib import Path
 from harness.blocks.disk import DiskError, check_image
 from harness.commands.argtypes import positive
 from harness.machine.console_session import BUSY_WAIT, HINT, RACK_HINT, session
-from harness.machine.build import PDP11, PRISTINE_DISK as PRISTINE, WORKING_DISK as WORK_DISK
+from harness.machine.build import (PDP11, PDP11_TIMED, PRISTINE_DISK as PRISTINE,
+                                    WORKING_DISK as WORK_DISK)
 
 
 
@@ -38,7 +39,10 @@ def configure(parser):
     parser.add_argument("--fast", action="store_true",
                         help="full speed instead of the 11/23's real-time pace")
     parser.add_argument("--trace", metavar="FILE", help="record the plant trace (CSV)")
-    parser.add_argument("--simulator", default=str(PDP11), help=argparse.SUPPRESS)
+    parser.add_argument("--timed", action="store_true",
+                        help="11/23 time: each instruction takes its KDF11-A time (SET CLK "
+                        "TIMED, on build/pdp11-timed) instead of 1/300000 s")
+    parser.add_argument("--simulator", help=argparse.SUPPRESS)
     # wall seconds a running word gets at BYE before ^C stops it (tests shorten it)
     parser.add_argument("--busy-wait", type=positive, default=BUSY_WAIT,
                         help=argparse.SUPPRESS)
@@ -66,9 +70,10 @@ def working_disk(requested):
 
 def run(args):
     disk = working_disk(args.disk)
+    args.simulator = args.simulator or str(PDP11_TIMED if args.timed else PDP11)
     if not Path(args.simulator).is_file():
         raise ConsoleError(f"{args.simulator}: no simulator (run make)")
     if args.trace and not Path(args.trace).resolve().parent.is_dir():
         raise ConsoleError(f"{args.trace}: its directory does not exist")
-    return session(args.simulator, disk, trace=args.trace, fast=args.fast,
+    return session(args.simulator, disk, trace=args.trace, fast=args.fast, timed=args.timed,
                    busy_wait=args.busy_wait)

@@ -4,7 +4,7 @@ import sys
 from pathlib import Path
 
 from harness.commands.argtypes import positive
-from harness.machine.build import KERNEL, PDP11, PRISTINE_DISK
+from harness.machine.build import KERNEL, PDP11, PDP11_TIMED, PRISTINE_DISK
 from harness.machine.script_run import ERRORS, run_file  # noqa: F401 (ERRORS: cli reports them)
 from harness.machine.scripted_machine import ScriptError
 
@@ -49,7 +49,11 @@ def configure(parser):
     parser.add_argument("--kernel", metavar="LDA", default=str(KERNEL),
                         help="the FORTH kernel to load (default build/kernel.lda); its "
                         "symbol map is the .map file beside it")
-    parser.add_argument("--simulator", default=str(PDP11), help=argparse.SUPPRESS)
+    parser.add_argument("--timed", action="store_true",
+                        help="11/23 time: each instruction takes its KDF11-A time (SET CLK "
+                        "TIMED, on build/pdp11-timed) instead of 1/300000 s; the clock "
+                        "ticks every real 1/60 s")
+    parser.add_argument("--simulator", help=argparse.SUPPRESS)
     parser.set_defaults(run=run)
 
 
@@ -69,7 +73,9 @@ def run(args):
                           "for both outputs; --transcript and --trace name files)")
     steps, result = run_file(args.script, transcript_path, trace_path, disk=args.disk,
                              keep_going=args.keep_going, line_limit=args.line_limit,
-                             kernel=args.kernel, simulator=args.simulator)
+                             kernel=args.kernel,
+                             simulator=args.simulator or (PDP11_TIMED if args.timed else PDP11),
+                             settings=("set clk timed",) if args.timed else ())
     for failure in result.failures:
         print(failure.where(args.script), file=sys.stderr)
     forth_lines = sum(1 for s in steps if s.kind == "forth")

@@ -16,6 +16,7 @@ ROOT = Path(__file__).resolve().parents[2]
 BUILD = ROOT / "build"
 PDP11 = ROOT / os.environ.get("PDP11_SIM", "build/pdp11")  # the robot's simulator
 PDP11_STOCK = BUILD / "pdp11-stock"                       # SIMH's own, for reference
+PDP11_TIMED = BUILD / "pdp11-timed"        # with the CPU patch: SET CLK TIMED (11/23 time)
 MACHINE_INI = ROOT / "pdp11-devices" / "machine.ini"      # the machine's configuration
 KERNEL = BUILD / "kernel.lda"                             # the FORTH kernel
 KERNEL_MAP = BUILD / "kernel.map"                         # its symbols (kernel_layout)

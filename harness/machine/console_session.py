@@ -50,11 +50,13 @@ RACK_HINT = ("The amplifier rack starts OFF: the axes stand still. After Set.Up.
 SIMH_ERROR = re.compile(r"(Unit not attached|Non-existent[^\r\n]*|[A-Z][^\r\n]*error[^\r\n]*)")
 
 
-def boot_script(disk, trace=None, fast=False, kernel=KERNEL):
-    """The console's machine: paced (or idling) as asked, the rack off, a trace."""
+def boot_script(disk, trace=None, fast=False, kernel=KERNEL, timed=False):
+    """The console's machine: paced (or idling) as asked, the rack off, a trace;
+    timed: each instruction takes its KDF11-A time (SET CLK TIMED)."""
     trace_line = f"attach plant {Path(trace).resolve()}\n" if trace else ""
     return simh.boot_script(disk, kernel, setup=f"{IDLE if fast else REALTIME}\n"
-                            f"{RACK_OFF}\n{trace_line}")
+                            + ("set clk timed\n" if timed else "")
+                            + f"{RACK_OFF}\n{trace_line}")
 
 
 def say(*lines):
@@ -247,12 +249,14 @@ def _interact(child, typed, shown):
         raise
 
 
-def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BUSY_WAIT):
+def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BUSY_WAIT,
+            timed=False):
     """Run the console until the user leaves; the exit status (0: all written)."""
     with tempfile.TemporaryDirectory(prefix="console-") as tmp:
         ini = Path(tmp) / "console.ini"
-        ini.write_text(boot_script(disk, trace, fast, kernel))
-        pace = "full speed" if fast else "real-time pace (300K instructions/s)"
+        ini.write_text(boot_script(disk, trace, fast, kernel, timed))
+        pace = "full speed" if fast else ("real-time pace (KDF11-A instruction times)" if timed
+                                          else "real-time pace (300K instructions/s)")
         print(f"[console] booting the FORTH on the PDP-11/23, {pace}, disk {disk}")
         print(f"[console] {HINT}")
         print(f"[console] {RACK_HINT}")

@@ -1,5 +1,5 @@
 """The FORTH on build/pdp11 as the robot tests and benchmarks drive it: the
-lock-step driving of harness/machine/scripted_machine.py (a breakpoint on QUERY, each
+lock-step driving of harness/machine/scripted_machine.py (a stop at QUERY's cue, each
 line put into the console receive ring, SIMH STEP for idle time, so every line
 starts at an exact instruction count and the same program gives the same
 trace), with a FORTH-line interface:

@@ -144,10 +144,11 @@ def check_start_image(disk):
 
 
 def run_file(script_path, transcript_path, trace_path, disk=PRISTINE_DISK,
-             keep_going=False, line_limit=60.0, kernel=KERNEL, simulator=PDP11):
+             keep_going=False, line_limit=60.0, kernel=KERNEL, simulator=PDP11, settings=()):
     """Run the console script at script_path on a fresh copy of `disk`; write the
     transcript and the plant trace (whole, even when a line failed). (steps,
-    Result); one of ERRORS, with nothing written, if the run cannot start."""
+    Result); one of ERRORS, with nothing written, if the run cannot start.
+    `settings`: SIMH commands before the run (ScriptedMachine's, e.g. SET CLK TIMED)."""
     steps = script.read(script_path)
     for path in (transcript_path, trace_path):
         check_writable(path)
@@ -161,7 +162,7 @@ def run_file(script_path, transcript_path, trace_path, disk=PRISTINE_DISK,
         check_image(copy)                        # the copy the machine changes
         with ScriptedMachine(copy.name, trace="trace.csv", cwd=tmp, simulator=simulator,
                              line_limit=line_limit, kernel=kernel,
-                             kernel_map=kernel.with_suffix(".map")) as m:
+                             kernel_map=kernel.with_suffix(".map"), settings=settings) as m:
             result = run_steps(m, steps, keep_going=keep_going)
         trace = (Path(tmp) / "trace.csv").read_bytes()
     write_atomic(transcript_path, result.transcript.encode("latin-1"))

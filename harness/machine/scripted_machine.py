@@ -3,9 +3,11 @@
 Why not the keyboard: a line typed into the pty lands at whatever instruction
 count the simulator has reached when the host gets round to writing it, and the
 servo and the plant keep moving while the FORTH waits; two runs of one script
-would then differ. Here the simulator stops itself, at a breakpoint on the code
-address of the kernel's QUERY (reached once per line, after the previous line's
-" ok" or error report), and while it is stopped the next line is deposited into
+would then differ. Here the simulator stops itself at the kernel's prompt:
+QUERY (reached once per line, after the previous line's " ok" or error report)
+starts with AWAIT-LINE, whose read of the DL11's status register is the cue the
+CUE device stops at (pdp11-devices/simh/prompt_cue.c: no per-instruction breakpoint
+test, so the FORTH runs at full speed). While it is stopped the next line is deposited into
 the kernel's console receive ring exactly as if the receive interrupt had just
 stored it (type-ahead); then it runs on. Every stop and every character thus
 falls on an instruction count that depends only on the script: the transcript
@@ -22,6 +24,7 @@ A line that does not reach the next prompt within `line_limit` simulated seconds
 FORTH's receive interrupt takes at once. Addresses come from build/kernel.map.
 """
 import contextlib
+import os
 import re
 import tempfile
 from dataclasses import dataclass
@@ -34,7 +37,7 @@ from harness.machine.build import KERNEL, KERNEL_MAP, MACHINE_INI, PDP11, ROOT
 from harness.machine.kernel_layout import KernelMapError, read_kernel_map
 from harness.machine.simh import examined
 
-KERNEL_SYMBOLS = ("QUERY", "RXHEAD", "RXTAIL", "RING", "RING-MASK", "TIB-SIZE")
+KERNEL_SYMBOLS = ("AWAIT-LINE", "RXHEAD", "RXTAIL", "RING", "RING-MASK", "TIB-SIZE")
 
 PROMPT = "sim> "
 # WAIT (the kernel's KEY with an empty ring, e.g. during #wait) skips straight to
@@ -45,6 +48,7 @@ PROMPT = "sim> "
 SKIP_WAITS = "deposit cpu wait_enable 1"
 # SIMH reports every stop as "\n<reason>, PC: <octal> (<instruction>)\n" then prompts.
 STOP = re.compile(r"\r\n([^\r\n]*), PC: ([0-7]+) \(([^\r\n]*)\)\r\nsim> ")
+MAX_STEP = 2**31 - 1
 EXAMINED = re.compile(r"([0-7]+):\s+([0-7]+)")
 
 
@@ -88,10 +92,12 @@ FORTH_ERROR = re.compile(r"\r\nError: ([^\r\n]*)")
 class ScriptedMachine(contextlib.AbstractContextManager):
     def __init__(self, disk, trace=None, simulator=PDP11, kernel=KERNEL,
                  kernel_map=KERNEL_MAP, line_limit=60.0, wall_timeout=300, cwd=ROOT,
-                 settings=()):
+                 settings=(), cue_breakpoint=False):
         """`disk` and `trace` are attached as given, relative to `cwd`: SIMH
         prints them in SHOW, so a scripted run passes bare names. `settings`
-        are SIMH commands run before the trace is attached (SET PLANT ...)."""
+        are SIMH commands run before the trace is attached (SET PLANT ...).
+        `cue_breakpoint`: stop at the cue by a SIMH breakpoint on its address
+        instead (slower; the test that the CUE device stops at the same place)."""
         for what, path in (("simulator", simulator), ("kernel", kernel),
                            ("disk", Path(cwd) / disk)):
             if not Path(path).is_file():
@@ -101,9 +107,15 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         except KernelMapError as e:
             raise ScriptError(str(e)) from e
         self.max_line = self.sym["TIB-SIZE"] - 1          # what ACCEPT takes
+        self.cue = self.sym["AWAIT-LINE"] + 4    # after its TST @#177560: at QUERY
         self.line_limit = line_limit
         self._tmp = tempfile.TemporaryDirectory(prefix="scripted-machine-")
         self._feed = Path(self._tmp.name) / "feed.ini"
+        # rewritten in place for every line, never shorter: blank lines pad it
+        # (opening for writing or truncating took over a millisecond here, as
+        # long as the rest of the line's round trip)
+        self._feed_fd = os.open(self._feed, os.O_RDWR | os.O_CREAT, 0o600)
+        self._feed_size = 0
         ini = Path(self._tmp.name) / "boot.ini"
         ini.write_text(f"do {MACHINE_INI}\n"
                        f"{SKIP_WAITS}\n"
@@ -111,12 +123,14 @@ class ScriptedMachine(contextlib.AbstractContextManager):
                        + "".join(f"{c}\n" for c in settings)
                        + (f"attach plant {trace}\n" if trace else "")
                        + f"load {Path(kernel).resolve()}\n"
-                       f"break {self.sym['QUERY']:o}\n")
+                       + (f"break {self.cue:o}\n" if cue_breakpoint
+                          else f"deposit cue pc {self.cue:o}\n"))
         # echo off: SIMH's commands are not echoed, so its output is all there is
         self.child = pexpect.spawn(str(simulator), [str(ini)], cwd=str(cwd), echo=False,
                                    encoding="latin-1", timeout=wall_timeout,
                                    dimensions=(24, 200))
         self.child.delaybeforesend = None
+        self.child.delayafterread = None       # pexpect's default sleeps 0.1 ms a read
         self._expect_prompt("the boot script")
         self.rate = self._clock_rate()
         self._head = None       # the ring's index after a line that reached QUERY
@@ -164,7 +178,7 @@ class ScriptedMachine(contextlib.AbstractContextManager):
                 raise ScriptError(f"the simulator reported, during {what}: {text.strip()}")
             text = text[len(PROMPT):]
         reason, pc = self.child.match.group(1), int(self.child.match.group(2), 8)
-        if reason == "Breakpoint" and pc == self.sym["QUERY"]:
+        if reason == "Breakpoint" and pc == self.cue:
             stopped = ""
         elif reason == "Step expired":
             stopped = "step"
@@ -176,6 +190,20 @@ class ScriptedMachine(contextlib.AbstractContextManager):
     def _steps(self, seconds):
         return max(1, round(seconds * self.rate))
 
+    def _run_for(self, seconds, what, before="", extra_prompts=0):
+        """`before` (commands), then run for `seconds` of simulated time or to a
+        stop, in STEPs of at most 31 bits (SIMH's limit: 161 s of SET CLK
+        TIMED's units); the Answer, its output that of every STEP."""
+        steps, outputs = self._steps(seconds), []
+        while True:
+            chunk = min(steps, MAX_STEP)
+            answer = self._run(f"{before}step {chunk}", what, extra_prompts)
+            outputs.append(answer.output)
+            steps, before, extra_prompts = steps - chunk, "", 0
+            if answer.stopped != "step" or steps == 0:
+                answer.output = "".join(outputs)
+                return answer
+
     # ---- what a script does ---------------------------------------------------------
     def line(self, text, limit=None):
         """Type one line (as if typed ahead) and run until the next prompt, or
@@ -185,10 +213,11 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         if any(not (32 <= ord(c) < 127 or c == "\t") for c in text):
             raise ScriptError("line holds a control or non-ASCII character")
         head = self._ring_head()
-        self._feed.write_text("\n".join(feed_commands(self.sym, text, head)) + "\n")
+        feed = ("\n".join(feed_commands(self.sym, text, head)) + "\n").encode()
+        self._feed_size = max(self._feed_size, len(feed))
+        os.pwrite(self._feed_fd, feed.ljust(self._feed_size, b"\n"), 0)
         limit = self.line_limit if limit is None else limit
-        answer = self._run(f"do {self._feed}\rstep {self._steps(limit)}",
-                           text, extra_prompts=1)
+        answer = self._run_for(limit, text, before=f"do {self._feed}\r", extra_prompts=1)
         if not answer.stopped:   # back at QUERY: ACCEPT took the line and its CR
             self._head = (head + len(text) + 1) & self.sym["RING-MASK"]
         return self._limited(answer, limit)
@@ -210,7 +239,7 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         `limit` simulated seconds more)."""
         limit = self.line_limit if limit is None else limit
         self._head = None
-        return self._limited(self._run(f"step {self._steps(limit)}", "resume"), limit)
+        return self._limited(self._run_for(limit, "resume"), limit)
 
     def interrupt(self, limit=None):
         """Type ^C, as a user stops a runaway line, and run to the next prompt (or
@@ -234,10 +263,10 @@ class ScriptedMachine(contextlib.AbstractContextManager):
     def run_to(self, address, limit):
         """Run until the instruction at `address` is next (a SIMH breakpoint, removed
         again), at most `limit` simulated seconds; the Answer (`stopped` names the
-        breakpoint, or says the time ran out). The QUERY breakpoint stays set."""
+        breakpoint, or says the time ran out). The prompt's cue stays set."""
         self.simh(f"break {address:o}")
         try:
-            answer = self._run(f"step {self._steps(limit)}", f"run to {address:o}")
+            answer = self._run_for(limit, f"run to {address:o}")
         finally:
             self.simh(f"nobreak {address:o}")
         return self._limited(answer, limit)
@@ -245,7 +274,7 @@ class ScriptedMachine(contextlib.AbstractContextManager):
     def wait(self, seconds):
         """Let `seconds` of simulated time pass with no input; the output."""
         self._head = None
-        answer = self._run(f"step {self._steps(seconds)}", f"#wait {seconds}")
+        answer = self._run_for(seconds, f"#wait {seconds}")
         if answer.stopped == "step":
             answer.stopped = ""
         elif not answer.stopped and not answer.error:
@@ -263,6 +292,9 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         except (ScriptError, pexpect.TIMEOUT, pexpect.EOF, OSError):
             pass            # a simulator already gone or stuck: killed below
         pty_child.close(self.child)
+        if self._feed_fd is not None:        # close() may come twice (Robot, __exit__)
+            os.close(self._feed_fd)
+            self._feed_fd = None
         self._tmp.cleanup()
 
     def __exit__(self, *exc):

@@ -23,6 +23,11 @@
    Devices SIMH paces from the clock (console polling, RQ's timer) read
    tmr_poll/tmxr_poll: they are set to RATE/60 instructions, a constant.
 
+   SET CLK TIMED (NOTIMED to end; kdf11_time.c): each instruction advances
+   time by its KDF11-A execution time instead of one count, RATE becomes
+   13333333 units of 75 ns a second: the ticks come every real 1/60 s of an
+   11/23's time.
+
    Pacing to the wall clock (wall_pacer.c, shared with the LAB device; pacing
    changes only when things happen on the host: every event keeps its
    instruction count, so runs stay deterministic). At a tick, the clock sleeps
@@ -68,6 +73,7 @@ static t_stat kwl_set_rate (UNIT *uptr, int32 val, char *cptr, void *desc);
 static t_stat kwl_show_rate (FILE *st, UNIT *uptr, int32 val, void *desc);
 static t_stat kwl_show_state (FILE *st, UNIT *uptr, int32 val, void *desc);
 static t_stat kwl_set_realtime (UNIT *uptr, int32 val, char *cptr, void *desc);
+static t_stat kwl_set_timed (UNIT *uptr, int32 val, char *cptr, void *desc);
 
 static DIB kwl_dib = {
     IOBA_CLK, IOLN_CLK, &kwl_rd, &kwl_wr,
@@ -91,6 +97,8 @@ static MTAB kwl_mod[] = {
     { MTAB_XTD|MTAB_VDV, 0, "STATE", NULL, NULL, &kwl_show_state, NULL },
     { MTAB_XTD|MTAB_VDV, 1, NULL, "REALTIME", &kwl_set_realtime, NULL, NULL },
     { MTAB_XTD|MTAB_VDV, 0, NULL, "NOREALTIME", &kwl_set_realtime, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, 1, NULL, "TIMED", &kwl_set_timed, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, 0, NULL, "NOTIMED", &kwl_set_timed, NULL, NULL },
     { MTAB_XTD|MTAB_VDV, 0, "ADDRESS", NULL, NULL, &show_addr, NULL },
     { MTAB_XTD|MTAB_VDV, 0, "VECTOR", NULL, NULL, &show_vec, NULL },
     { 0 }
@@ -184,9 +192,18 @@ static t_stat kwl_set_realtime (UNIT *uptr, int32 val, char *cptr, void *desc)
     return SCPE_OK;
 }
 
+static t_stat kwl_set_timed (UNIT *uptr, int32 val, char *cptr, void *desc)
+{
+    if (cptr != NULL)
+        return SCPE_ARG;
+    return kdf11_time_set (val);                /* kdf11_time.c */
+}
+
 static t_stat kwl_show_rate (FILE *st, UNIT *uptr, int32 val, void *desc)
 {
-    fprintf (st, "rate=%d instructions/s%s", clock_rate, realtime ? ", realtime" : "");
+    fprintf (st, "rate=%d %s/s%s", clock_rate,
+             kdf11_timed ? "units (timed: KDF11-A times in 75 ns units)" : "instructions",
+             realtime ? ", realtime" : "");
     return SCPE_OK;
 }
 

@@ -6,8 +6,9 @@
    another name, and this file defines the sim_devices[] SIMH uses. It is
    filled at start-up from the stock list: SIMH's CLK (clk_dev, the
    wall-calibrated line clock) is replaced, in its place, by the project's
-   KW11-L (kw11l.c, also named CLK); DRV11, AAV11, PLANT and LAB (lab.c,
-   the lab bench's pacing, pause and memory watch) are appended.
+   KW11-L (kw11l.c, also named CLK); DRV11, AAV11, PLANT, LAB (lab.c,
+   the lab bench's pacing, pause and memory watch) and CUE (prompt_cue.c, the
+   scripted runs' stop at the prompt) are appended.
    Everything else is SIMH's own, in SIMH's order.
 
    What still refers to the stock clock: pdp11_cpumod.c sets clk_fie,
@@ -23,7 +24,8 @@
    Hooks. scp.c declares `void (*sim_vm_init)(void)` without initialising it
    and calls it first thing in main(); with -fcommon this file's initialised
    definition is the one linked. machine_vm_init fills the table, replaces the
-   console keyboard's service routine (console_pacing.c), wraps the CPU's
+   console keyboard's service routine (console_pacing.c) and its read routine
+   (prompt_cue.c), wraps the CPU's
    examine and deposit for the I/O page (io_page_examine.c), wraps the RL02
    units' service routine so that a written block is fflush()ed and fsync()ed
    before the controller reports it done (rl_durable.c: FLUSH is durable), and
@@ -62,6 +64,7 @@ static void machine_vm_init (void)
     add_device (&n, &aav_dev);
     add_device (&n, &plant_dev);
     add_device (&n, &lab_dev);
+    add_device (&n, &cue_dev);
     sim_devices[n] = NULL;
     /* a SET CLK RATE: the plant integrates up to now in the old time; then the
        clock, the plant, the console and the lab keep their events' times */
@@ -74,6 +77,7 @@ static void machine_vm_init (void)
     plant_dev_on_lines_changed (&drv11_lines_changed);
     plant_dev_init ();
     console_pacing_install ();
+    prompt_cue_install ();
     io_page_examine_install ();
     rl_durable_install ();
     sim_vm_post = &machine_vm_post;

@@ -27,7 +27,10 @@ def test_three_ticks_of_a_move_on_x(capsys):
     x = [rows["X"] for _, _, rows in shown]
     assert all(r[0] == 800 for r in x)                                   # Desire.Pos
     assert x[0][1] < x[1][1] < x[2][1]                                   # counter climbs
-    assert all(r[5] == 1 and r[6] > r[3] for r in x)   # Command.Status 1, DAC above 0-Vel
+    # Command.Status 1, DAC above 0-Vel from the second table: the first may come
+    # before the servo's first tick of the move (Abs.Move's stores and the tick's
+    # entry are a few instructions apart: which comes first depends on the kernel)
+    assert all(r[5] == 1 and r[6] > r[3] for r in x[1:])
 
 
 def test_a_bad_setup_line_is_reported(capsys):

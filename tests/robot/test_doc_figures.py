@@ -126,7 +126,7 @@ def test_exercise_hunting_codes(tmp_path):
     as `python -m harness tick --ticks 16 --line "800 0 400 0 Abs.Move
     Move.Complete?"` shows them."""
     codes = [int(c) for c in sentence(
-        "docs/exercises.md", r"Four ticks on x after a 1-inch move \(([\d, ]+), \.\.\.\)").split(",")]
+        "docs/exercises.md", r"(?:Four|Five) ticks on x after a 1-inch move \(([\d, ]+), \.\.\.\)").split(",")]
     robot, view = tick_view(tmp_path, watch=("800 0 400 0 Abs.Move Move.Complete?",))
     with robot:
         shown = []

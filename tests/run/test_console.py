@@ -75,6 +75,20 @@ def test_console_command_simh_prompt_and_bye_flushes(tmp_path):
     assert (tmp_path / "t.csv").read_text().startswith("time_s,axis,")
 
 
+def test_console_timed_runs_on_the_kdf11s_times(tmp_path):
+    child, disk = fresh_console(tmp_path, "--timed", "--fast")
+    child.send("\x05")                                   # ^E: SIMH's prompt
+    child.expect("sim> ")
+    child.send("show clk rate\r")
+    child.expect(r"rate=13333333 units \(timed")
+    child.expect("sim> ")
+    child.send("cont\r")
+    assert probe_prompt(child) == 0
+    child.send("BYE\r")
+    child.expect(FLUSHED)
+    child.expect(pexpect.EOF)
+
+
 # (every abbreviation of QUIT, EXIT and BYE: tests/run/test_console_watch.py)
 @pytest.mark.parametrize("keys,how", [("\x04", None),        # ^D at sim>
                                       ("  q\r", "SIMH's QUIT at its prompt")])
