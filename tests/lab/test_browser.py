@@ -94,8 +94,10 @@ def test_the_asn_shows_its_trial_steps_payoff_and_weights(page):
     type_line(page, "1 Trials", timeout=120)
     wait_for("the ASN's words and weights", lambda: js(
         page, "window.lab.servo['Trial.No'] === 1 && (window.lab.servo.Weights || []).length"))
-    text = js(page, "document.getElementById('asn-text').textContent")
-    assert text.startswith("ASN: trials done 1, steps ") and "payoff" in text
+    text = wait_for("the panel to show them", lambda: (lambda t: t.startswith(
+        "ASN: trials done 1, steps ") and t)(js(page, "document.getElementById('asn-text')"
+                                                ".textContent")))
+    assert "payoff" in text and "late moves" in text
     assert not js(page, "document.getElementById('asn').hidden")
     assert any(js(page, "window.lab.servo.Weights"))                 # it learned something
     page.save_screenshot(str(ARTIFACTS / "lab-asn.png"))
