@@ -29,7 +29,7 @@ LABEL TICK  ( line clock, vector 100, until a servo is installed: count ticks )
 \ receive interrupt on, free space filled, priority 0, then the thread holding COLD.
 LABEL ENTRY
   340O # MTPS,  RP RP0 # MOV,  S S0 # MOV,
-  RXHEAD @# CLR,  RXTAIL @# CLR,  RXLOST @# CLR,  TICKS @# CLR,  TICKS 2 + @# CLR,  THROW-CELL @# ' THROW # MOV,
+  RXHEAD @# CLR,  RXTAIL @# CLR,  RXLOST @# CLR,  XOFF-HELD @# CLR,  RXDROP @# CLR,  TICKS @# CLR,  TICKS 2 + @# CLR,  THROW-CELL @# ' THROW # MOV,
   177560O @# 100O # MOV,
   \ free dictionary space holds a reserved instruction (000010): a wild jump past
   \ HERE traps and is reported instead of running into HALT (zero) and stopping

@@ -12,6 +12,7 @@ BUFFERS CONSTANT BUFFERS  ( -- a ) \ block buffer area (disk.fs)
 BUFFERS-SIZE CONSTANT BUFFERS-SIZE  ( -- n )
 TIB0 CONSTANT TIB  ( -- a )  \ CORE EXT
 RXLOST CONSTANT RXLOST  ( -- a ) \ console characters lost to a full ring
+RXDROP CONSTANT RXDROP  ( -- a ) \ typed-ahead characters ^C dropped
 VARIABLE STATE  ( -- a ) \ CORE: true while compiling
 10 VAR BASE  ( -- a )  \ CORE
 VARIABLE DP  ( -- a ) \ HERE; set by the metacompiler

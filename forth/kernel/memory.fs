@@ -14,8 +14,11 @@
   154010O EQU TRAP-PC     \   PC it interrupted
   154012O EQU THROW-CELL  \   THROW's code address: CODE words raise errors through it
   154014O EQU TICKS       \   60 Hz ticks the kernel's clock handler counted (double)
+  154020O EQU XOFF-HELD   \   nonzero: XOFF sent to the terminal, XON not yet
+  154022O EQU RXDROP      \   typed-ahead characters ^C dropped from the ring
   154400O EQU RING        \ 154400-155377 console receive ring (511 characters)
      777O EQU RING-MASK
+     384  EQU XOFF-MARK   \ characters in the ring that make RXINT send XOFF
   155400O EQU TIB0        \ 155400-155777 terminal input buffer
      256  EQU TIB-SIZE
   156000O EQU S-LIMIT     \ 156000-156757 data stack (grows down from S0)

@@ -206,10 +206,20 @@ CODE (FIND)  ( a u lfa -- nfa | 0 )
   THEN,
   IP RP )+ MOV,  S 2 # ADD,  S ) CLR,  NEXT,  END-CODE
 
-\ console (DL11 at 177560): receive by interrupt into a ring of 511 characters;
-\ when the ring is full further characters are dropped and counted (RXLOST)
-\ ^C is not queued: it interrupts whatever runs (a runaway loop) with error -28
+\ console (DL11 at 177560): receive by interrupt into a ring of 511 characters.
+\ Flow control as a DL11 and a paper-tape reader did it (docs/console.md, "A
+\ paste"): RXINT sends XOFF (DC3) when the ring holds XOFF-MARK characters, KEY
+\ sends XON (DC1) when it finds the ring empty; the terminal side stops
+\ delivering meanwhile (pdp11-devices/console_pacing.c). A ring that is full all
+\ the same drops further characters and counts them (RXLOST): the guard.
+\ ^C is not queued: it empties the ring (counted in RXDROP, reported by .LOST)
+\ and interrupts whatever runs (a runaway loop) with error -28
 
+\ SEND-CONTROL (JSR PC; the character in T): wait for the transmitter, send, and
+\ wait until it is done, so an EMIT this interrupted finds it free again.
+LABEL SEND-CONTROL
+  BEGIN,  177564O @# 200O # BIT,  NE UNTIL,  177566O @# T MOV,
+  BEGIN,  177564O @# 200O # BIT,  NE UNTIL,  PC RTS,  END-CODE
 \ KEY's idle step (JSR PC): with the ring empty, WAIT for the next interrupt, so
 \ the host can idle (SET CPU IDLE, pdp11-devices/bus/kw11l.c); time still passes
 \ by the instruction count. Its layout is fixed: CMP at +0, BNE at +6, WAIT at
@@ -221,10 +231,18 @@ LABEL KEY-IDLE
 LABEL RXINT
   RP -) R0 MOV,  RP -) T MOV,  RP -) W MOV,
   R0 177562O @# MOV,  R0 177600O # BIC,
-  3 # R0 CMP,  EQ IF,  0 # MTPS,  S S0 # MOV,  S -) CLR,  -28 THROW,  THEN,
+  3 # R0 CMP,  EQ IF,
+    T RXHEAD @# MOV,  T RXTAIL @# SUB,  T RING-MASK INVERT # BIC,  RXDROP @# T ADD,
+    RXTAIL @# RXHEAD @# MOV,
+    XOFF-HELD @# TST,  NE IF,  XOFF-HELD @# CLR,  T 17 # MOV,  SEND-CONTROL @# PC JSR,  THEN,
+    0 # MTPS,  S S0 # MOV,  S -) CLR,  -28 THROW,  THEN,
   W RXHEAD @# MOV,  T W MOV,  T INC,  T RING-MASK INVERT # BIC,
   T RXTAIL @# CMP,
-  EQ IF,  RXLOST @# INC,  ELSE,  RING W I) R0 MOVB,  RXHEAD @# T MOV,  THEN,
+  EQ IF,  RXLOST @# INC,  ELSE,  RING W I) R0 MOVB,  RXHEAD @# T MOV,
+    T RXTAIL @# SUB,  T RING-MASK INVERT # BIC,  XOFF-MARK # T CMP,
+    HIS IF,  XOFF-HELD @# TST,  EQ IF,
+      XOFF-HELD @# INC,  T 19 # MOV,  SEND-CONTROL @# PC JSR,  THEN,  THEN,
+  THEN,
   R0 6 RP I) MOV,  R0 KEY-IDLE 6 + # SUB,  2 # R0 CMP,
   LOS IF,  6 RP I) KEY-IDLE 10 + # MOV,  THEN,
   W RP )+ MOV,  T RP )+ MOV,  R0 RP )+ MOV,  RTI,  END-CODE
@@ -235,6 +253,7 @@ CODE KEY?  ( -- f )  \ FACILITY
 \ as the interrupt would (PS and PC pushed), so the console never goes deaf.
 CODE KEY  ( -- c )  \ CORE
   BEGIN,  RXTAIL @# RXHEAD @# CMP,  EQ WHILE,
+    XOFF-HELD @# TST,  NE IF,  XOFF-HELD @# CLR,  T 17 # MOV,  SEND-CONTROL @# PC JSR,  THEN,
     R0 MFPS,  R0 177400O # BIC,  R0 200O # BIT,      \ MFPS extends the sign: PS is 8 bits
     EQ IF,  KEY-IDLE @# PC JSR,
     ELSE,  177560O @# 200O # BIT,  NE IF,  RP -) R0 MOV,  RXINT @# PC JSR,  THEN,

@@ -143,8 +143,9 @@ CREATE ERROR-TEXTS  ( -- a )
   'ON-ERROR @ ?DUP IF EXECUTE THEN  0 PRIORITY! ;
 
 \ ---- QUIT --------------------------------------------------------------------------
-: .LOST  ( -- )  \ say so when the console ring overflowed
-  RXLOST @ ?DUP IF CR U. ." characters lost: typed too far ahead" CR  0 RXLOST ! THEN ;
+: .LOST  ( -- )  \ say so when the console ring overflowed, or ^C emptied it
+  RXLOST @ ?DUP IF CR U. ." characters lost: typed too far ahead" CR  0 RXLOST ! THEN
+  RXDROP @ ?DUP IF U. ." typed-ahead characters dropped by ^C" CR  0 RXDROP ! THEN ;
 \ AWAIT-LINE reads the DL11's RCSR, which a DL11 ignores: the cue at which a scripted
 \ run stops to type the next line (pdp11-devices/simh/prompt_cue.c), at no cost between
 CODE AWAIT-LINE  ( -- )  177560O @# TST,  NEXT,  END-CODE  \ prompts (no breakpoint)
@@ -160,7 +161,7 @@ CODE RS-EMPTY  ( -- )  RP RP0 # MOV,  S -) CLR,  -6 THROW,  END-CODE
 CREATE RS-GUARD  ( -- a )  ' RS-EMPTY ,
 : ABORT-TO-QUIT  ( code -- )  \ THROW with no CATCH frame, return stack emptied:
   >R CLEAR-STACK  BASE @ 2 37 WITHIN 0= IF DECIMAL THEN  \ a sane stack and BASE
-  R> .ERROR  RESET-AFTER-ERROR  QUIT ;                   \ for the report
+  R> .ERROR  .LOST  RESET-AFTER-ERROR  QUIT ;            \ for the report
 : QUIT  ( -- )  \ CORE: read, interpret: forever. An error is a THROW with no CATCH
   RS-GUARD RP0 !  RP0 RP!  0 HANDLER !  POSTPONE [  0 BLK !  0 PRIORITY!  \ frame:
   BEGIN INTERPRET-LINE .PROMPT AGAIN ;         \ it reports, resets, QUITs again

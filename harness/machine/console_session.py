@@ -12,10 +12,12 @@ ones that are), detaches the trace and the disk, quits SIMH and says what happen
 """
 import os
 import re
+import select
 import signal
 import sys
 import tempfile
 import termios
+import tty
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -28,6 +30,7 @@ from harness.machine.build import KERNEL
 from harness.machine.console_halt import HaltWatcher
 from harness.machine.console_watch import Leave, LineWatcher
 from harness.machine.kernel_layout import KernelMapError, read_kernel_map
+from harness.machine.key_feed import KeyFeed, shown
 
 # the 11/23's pace (CLK RATE, 300K instructions/s) from the first instruction; SIMH's
 # SET THROTTLE cannot pace the kernel's WAIT (pdp11-devices/bus/kw11l.c)
@@ -221,32 +224,66 @@ def leave(child, disk, trace, kernel=KERNEL, busy_wait=BUSY_WAIT, devices=(), ec
 
 
 HANGUP = "the terminal closed"
-
-
-def _typed(watcher):
-    """interact()'s input filter: the watcher's, and the terminal going away (end
-    of input, which pexpect would otherwise read again at once, for ever) is a way
-    out like BYE, so the FORTH still FLUSHes."""
-    def feed(data):
-        if not data:
-            raise Leave(HANGUP)
-        return watcher.feed(data)
-    return feed
+PUMP_S = 0.005                     # how often waiting keys are offered to the pty
 
 
 def _on_hangup(signum, frame):
     raise Leave(HANGUP)
 
 
-def _interact(child, typed, shown):
-    """pexpect's interact. A way out raised inside it stays the way out even when
-    interact's clean-up then fails to restore a terminal that has gone away."""
+def _raw(fd):
+    """The terminal in raw mode, as SIMH's console wants it; the mode to restore."""
+    if not os.isatty(fd):
+        return None
+    saved = termios.tcgetattr(fd)
+    tty.setraw(fd, termios.TCSANOW)           # what was typed before is kept
+    return saved
+
+
+def _restore(fd, saved):
+    if saved is not None:
+        try:
+            termios.tcsetattr(fd, termios.TCSAFLUSH, saved)
+        except termios.error:
+            pass                             # the terminal has gone away
+
+
+def _converse(child, feed, watcher, halts):
+    """The user's terminal joined to the simulator's, until the simulator exits
+    (returns) or the user leaves (Leave). Keys go through `feed`, never with a
+    blocking write: the machine's output is read all the while. The end of
+    input (the terminal closed) is a way out like BYE, so the FORTH still
+    FLUSHes."""
+    fd_in, fd_out, fd_sim = sys.stdin.fileno(), sys.stdout.fileno(), child.child_fd
+    saved = _raw(fd_in)
     try:
-        child.interact(escape_character=None, input_filter=typed, output_filter=shown)
-    except termios.error as err:
-        if isinstance(err.__context__, Leave):
-            raise err.__context__ from None
-        raise
+        while True:
+            ready, _, _ = select.select([fd_in, fd_sim], [], [], PUMP_S if feed.queue else None)
+            if fd_sim in ready:
+                try:
+                    data = os.read(fd_sim, 1 << 16)
+                except OSError:
+                    data = b""
+                if not data:
+                    return
+                feed.output(data)
+                _show(fd_out, shown(halts.feed(watcher.output(data))))
+            if fd_in in ready:
+                data = os.read(fd_in, 1 << 16)
+                if not data:
+                    raise Leave(HANGUP)
+                for note in feed.typed(data, watcher):
+                    say(note)
+            feed.pump(watcher)
+    finally:
+        _restore(fd_in, saved)
+
+
+def _show(fd, data):
+    try:
+        os.write(fd, data)
+    except OSError:
+        pass                                 # nobody reads a closed terminal
 
 
 def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BUSY_WAIT,
@@ -266,10 +303,11 @@ def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BU
                               dimensions=(size.lines, size.columns))
         child.delaybeforesend = None
         watcher = LineWatcher(bye_halt(kernel))
+        feed = KeyFeed(child.child_fd, child.pid)
         hangup = signal.signal(signal.SIGHUP, _on_hangup)
         try:
             halts = HaltWatcher(kernel, kernel_layout.entry(Path(kernel).with_suffix(".map")) or 0)
-            _interact(child, _typed(watcher), lambda data: halts.feed(watcher.output(data)))
+            _converse(child, feed, watcher, halts)
         except Leave as way:
             signal.signal(signal.SIGHUP, signal.SIG_IGN)     # leaving: no second hangup
             if way.how == HANGUP:
@@ -277,6 +315,9 @@ def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BU
             if way.how != "BYE":
                 say(f"{way.how}: leaving; the FORTH FLUSHes its blocks first")
             child.send(way.typed)                # typed ahead of the way out
+            left = feed.discard()
+            if left:
+                say(f"{left} characters typed after the way out were not sent to the machine")
             gone = leave(child, disk, trace, kernel, busy_wait)
             say(*gone.report(), "Bye.")
             return 0 if gone.safe else 1

