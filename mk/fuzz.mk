@@ -1,7 +1,9 @@
 # mk/fuzz.mk: the long checks of bad and large input (harness/fuzz/).
 #   make fuzz                 the console fuzz of issue 8 (console_fuzz.py): 10 000
-#                             seeded random lines, then a robot move; prints halts,
-#                             hangs and reboots (all must be 0); then issue 23's:
+#                             seeded random lines, then a robot move, then 20
+#                             rounds of a second simulator on the same image
+#                             (two_writers.py); prints halts, hangs, reboots and
+#                             failed rounds (all must be 0); then issue 23's:
 #                             pastes of 5 000 and 30 000 characters into the
 #                             console (both paces) and the lab page (paste_runs.py),
 #                             and 50 000 malformed lab messages (protocol_fuzz.py)

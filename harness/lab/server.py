@@ -45,9 +45,9 @@ TAKE_KEY = b"\x14"               # ^T in the shell: take the keyboard
 class Lab:
     """The simulator, the servo watch and the connected pages."""
 
-    def __init__(self, simulator, disk, symbols, speed="real"):
+    def __init__(self, simulator, disk, symbols, speed="real", read_only=False):
         self.sim = Simulator(simulator, disk, self.on_console, self.on_lab, self.on_ended,
-                             speed, page=self.to_pages)
+                             speed, page=self.to_pages, read_only=read_only)
         self.shell_echo = None           # the shell's terminal, when it types too
         self.watch = ServoWatch(symbols)
         self.pages = {}                  # websocket -> its name ("page 3")
@@ -288,11 +288,11 @@ def make_app(lab, token, port_of):
     return app
 
 
-async def serve(simulator, disk, symbols, port, speed, announce):
+async def serve(simulator, disk, symbols, port, speed, announce, read_only=False):
     """Run the lab until the user leaves; True if every UPDATEd block was written
     and the disk detached, None if the simulator exited by itself."""
     token = guard.new_token()
-    lab = Lab(simulator, disk, symbols, speed)
+    lab = Lab(simulator, disk, symbols, speed, read_only)
     runner = None
 
     def port_of():

@@ -4,8 +4,10 @@ The machine boots as in `make run`, with the LAB device (pdp11-devices/lab/lab.c
 attached to a FIFO in a private temporary directory; a second FIFO carries the
 lab's commands (speed, pause, step, watch, dump) to the device. Everything is
 read on the asyncio loop, so the simulator never waits long for a reader.
-Leaving (BYE, ^D, ^C or QUIT at sim>, the FORTH's BYE word, or close()) is the
-console's: FLUSH, check, detach, quit (harness/machine/console_session.py).
+Leaving (BYE, ^D, ^C at sim>, the FORTH's BYE word, or close()) is the console's:
+FLUSH, check, detach, quit (harness/machine/console_session.py). SIMH's QUIT,
+EXIT or BYE typed at the page's sim> FLUSH inside the simulator
+(pdp11-devices/simh/leave_check.c); the lab then reports from its exit status.
 Keys go through a KeyFeed (harness/machine/key_feed.py): never a blocking write,
 a bounded queue (QUEUE_LIMIT) whose room the pages are told.
 A lab's temporary directory holds lab.pid; a new lab removes the directories of
@@ -23,7 +25,8 @@ import pexpect
 from harness.lab.feed import Lines, lab_row
 from harness.machine import plant_rows, simh
 from harness.machine.build import KERNEL, ROOT
-from harness.machine.console_session import RACK_OFF, bye_halt, leave, say
+from harness.machine.console_session import (RACK_OFF, bye_halt, leave, say,
+                                             simh_exit_report)
 from harness.machine.console_watch import Leave, LineWatcher
 from harness.machine.key_feed import KeyFeed, shown
 
@@ -58,21 +61,23 @@ def _alive(pid):
     return True
 
 
-def boot_script(disk, lab_fifo, speed, kernel=KERNEL):
+def boot_script(disk, lab_fifo, speed, kernel=KERNEL, read_only=False):
     """The lab's machine: the LAB device on its FIFO, the rack off as in make run
     (the page has the switch)."""
     return simh.boot_script(disk, kernel, setup=f"attach lab {lab_fifo}\n"
-                            f"set lab speed={speed}\n{RACK_OFF}\n")
+                            f"set lab speed={speed}\n{RACK_OFF}\n", read_only=read_only)
 
 
 class Simulator:
     """One lab machine. Callbacks (called on the loop): console(bytes),
     lab(LabRow), ended(safe: bool, or None when the simulator exited by itself)."""
 
-    def __init__(self, simulator, disk, console, lab, ended, speed="real", page=None):
+    def __init__(self, simulator, disk, console, lab, ended, speed="real", page=None,
+                 read_only=False):
         self.callbacks = console, lab, ended
         self.page = page or console               # the leaving report: the page's copy
         self.simulator, self.disk, self.speed = simulator, disk, speed
+        self.read_only = read_only
         remove_stale()
         self.tmp = tempfile.TemporaryDirectory(prefix=TMP_PREFIX)
         (Path(self.tmp.name) / "lab.pid").write_text(str(os.getpid()))
@@ -96,7 +101,8 @@ class Simulator:
         self.fds["lab"] = os.open(lab_fifo, os.O_RDONLY | os.O_NONBLOCK)
         self.ctl = os.open(tmp / "lab.ctl", os.O_RDWR | os.O_NONBLOCK)
         ini = tmp / "lab.ini"
-        ini.write_text(boot_script(self.disk, lab_fifo, SPEEDS[self.speed]))
+        ini.write_text(boot_script(self.disk, lab_fifo, SPEEDS[self.speed],
+                                   read_only=self.read_only))
         self.child = pexpect.spawn(str(self.simulator), [str(ini)], timeout=None,
                                    dimensions=(24, 80), cwd=str(ROOT))
         self.child.delaybeforesend = None
@@ -144,10 +150,7 @@ class Simulator:
                     self.leaving = True               # the simulator exited by itself
                     self.keys_waiting.set()
                     self._release()
-                    self.callbacks[0](f"\r\n[lab] The simulator exited on its own: blocks "
-                                      "UPDATEd since the last FLUSH, if any, were not written "
-                                      f"to {self.disk}. The session has ended.\r\n".encode())
-                    self.callbacks[2](None)
+                    self.callbacks[2](self._exited())
                 return
             handle(data)
         loop.add_reader(fd, readable)
@@ -162,7 +165,7 @@ class Simulator:
     # ---- from the page ------------------------------------------------------------
     def keys(self, data):
         """What the user typed; notes for the user (what ^C dropped). A way out
-        (BYE, ^D, ^C or QUIT at sim>: harness/machine/console_watch.py) starts
+        (BYE, ^D, ^C at sim>: harness/machine/console_watch.py) starts
         leaving, as the console does."""
         if self.leaving or self.feed is None:
             return []
@@ -233,6 +236,19 @@ class Simulator:
         finally:
             self._release()
         self.callbacks[2](safe)
+
+    def _exited(self):
+        """The simulator ended by itself (SIMH's QUIT at the page's sim>, a refused
+        disk, a crash): the report, to the shell and the page; True when its exit
+        status says every UPDATEd block was written, None when nothing is known."""
+        code = self.child.exitstatus
+        lines, status = simh_exit_report(code, self.disk)
+        known = code in (0, simh.LEFT_WITHOUT_BLOCKS, simh.DISK_HELD)
+        if lines:
+            if known:                             # else the lab command says it
+                say(*lines)
+            self.page("".join(f"\r\n[lab] {line}" for line in lines).encode() + b"\r\n")
+        return status == 0 if known else None
 
     def _release(self):
         for name in list(self.fds):

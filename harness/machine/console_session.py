@@ -3,9 +3,10 @@
 The user types to the FORTH (or, after ^E, to SIMH's sim> prompt) directly;
 the harness watches the keystrokes only to catch the ways out
 (harness/machine/console_watch.py): BYE, ^D, the halt of the FORTH's BYE word, and at sim>
-^C or SIMH's QUIT/EXIT/BYE,
-which would otherwise end the simulator with the FORTH's UPDATEd blocks unwritten.
-Then it erases the typed line (^U, which both the FORTH and SIMH's prompt take as
+^C, which would otherwise end the simulator with the FORTH's UPDATEd blocks unwritten.
+(SIMH's QUIT, EXIT and BYE at sim> FLUSH the blocks inside the simulator,
+pdp11-devices/simh/leave_check.c; the console then reports from its exit status:
+simh_exit_report.) Then it erases the typed line (^U, which both the FORTH and SIMH's prompt take as
 "kill line"), brings the FORTH back to its prompt if SIMH had it stopped, has it
 FLUSH its block buffers, checks at sim> that no UPDATEd block is left (listing the
 ones that are), detaches the trace and the disk, quits SIMH and says what happened.
@@ -45,21 +46,35 @@ RACK_OFF = "set plant power=off"
 CTRL_C, CTRL_E, CTRL_U = b"\x03", b"\x05", b"\x15"
 BUSY_WAIT = 3                      # wall seconds a running word gets before ^C stops it
 FLUSH_WAIT = 60                    # wall seconds the FORTH gets to answer FLUSH
-HINT = ("Console: leave with BYE (or ^D; ^C or QUIT at sim> too): the FORTH FLUSHes its "
-        "blocks and the disk is detached. ^E gives SIMH's sim> prompt (SHOW PLANT, then "
+HINT = ("Console: leave with BYE (or ^D; ^C, QUIT, EXIT or BYE at sim> too): the FORTH "
+        "FLUSHes its blocks and the disk is detached. ^E gives SIMH's sim> prompt (SHOW PLANT, then "
         "CONT to come back).")
 RACK_HINT = ("The amplifier rack starts OFF: the axes stand still. After Set.Up.Robot, "
              "switch it on: ^E, then SET PLANT POWER=ON, then CONT.")
 SIMH_ERROR = re.compile(r"(Unit not attached|Non-existent[^\r\n]*|[A-Z][^\r\n]*error[^\r\n]*)")
 
 
-def boot_script(disk, trace=None, fast=False, kernel=KERNEL, timed=False):
+def boot_script(disk, trace=None, fast=False, kernel=KERNEL, timed=False, read_only=False):
     """The console's machine: paced (or idling) as asked, the rack off, a trace;
     timed: each instruction takes its KDF11-A time (SET CLK TIMED)."""
     trace_line = f"attach plant {Path(trace).resolve()}\n" if trace else ""
     return simh.boot_script(disk, kernel, setup=f"{IDLE if fast else REALTIME}\n"
                             + ("set clk timed\n" if timed else "")
-                            + f"{RACK_OFF}\n{trace_line}")
+                            + f"{RACK_OFF}\n{trace_line}", read_only=read_only)
+
+
+def simh_exit_report(status, disk):
+    """(lines to say, exit status) when the simulator ended by itself with `status`."""
+    if status == simh.DISK_HELD:                 # its own line said who holds the disk
+        return [], 1
+    if status == 0:
+        return ["The simulator was left at sim> (QUIT, EXIT or BYE): it FLUSHed the "
+                f"FORTH's UPDATEd blocks first (named above, if any) and closed {disk}."], 0
+    if status == simh.LEFT_WITHOUT_BLOCKS:
+        return [f"The simulator was left with QUIT -F: the blocks named above are NOT "
+                f"SAVED in {disk}."], 1
+    return ["the simulator exited on its own: blocks UPDATEd since the last FLUSH, if "
+            f"any, were not written to {disk}"], 1
 
 
 def say(*lines):
@@ -213,8 +228,7 @@ def leave(child, disk, trace, kernel=KERNEL, busy_wait=BUSY_WAIT, devices=(), ec
         for unit in (("plant",) if trace else ()) + tuple(devices):
             _detach(child, unit)
         gone.detach = _detach(child, "rl0")
-        child.send(b"quit\r")
-        child.expect(pexpect.EOF, timeout=15)
+        pty_child.quit_simh(child)       # the report names the blocks a refusal would
     except (pexpect.TIMEOUT, pexpect.EOF) as err:
         gone.notes.append(f"the simulator stopped answering while leaving "
                           f"({type(err).__name__})")
@@ -287,14 +301,15 @@ def _show(fd, data):
 
 
 def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BUSY_WAIT,
-            timed=False):
+            timed=False, read_only=False):
     """Run the console until the user leaves; the exit status (0: all written)."""
     with tempfile.TemporaryDirectory(prefix="console-") as tmp:
         ini = Path(tmp) / "console.ini"
-        ini.write_text(boot_script(disk, trace, fast, kernel, timed))
+        ini.write_text(boot_script(disk, trace, fast, kernel, timed, read_only))
         pace = "full speed" if fast else ("real-time pace (KDF11-A instruction times)" if timed
                                           else "real-time pace (300K instructions/s)")
-        print(f"[console] booting the FORTH on the PDP-11/23, {pace}, disk {disk}")
+        mode = " (read-only: FLUSH will fail)" if read_only else ""
+        print(f"[console] booting the FORTH on the PDP-11/23, {pace}, disk {disk}{mode}")
         print(f"[console] {HINT}")
         print(f"[console] {RACK_HINT}")
         sys.stdout.flush()
@@ -324,6 +339,7 @@ def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BU
         finally:
             signal.signal(signal.SIGHUP, hangup)
             pty_child.close(child)
-        say("the simulator exited on its own: blocks UPDATEd since the last FLUSH, if "
-            f"any, were not written to {disk}")
-        return 1
+        lines, status = simh_exit_report(child.exitstatus, disk)
+        if lines:
+            say(*lines)
+        return status

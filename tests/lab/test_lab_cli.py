@@ -128,3 +128,19 @@ def test_a_new_lab_removes_what_a_killed_lab_left(tmp_path):
     (tmp_path / "lab-not-ours").mkdir()
     assert remove_stale(tmp_path) == ["lab-killed"]
     assert sorted(p.name for p in tmp_path.iterdir()) == ["lab-not-ours", "lab-running"]
+
+
+def test_quit_edited_at_sim_in_the_shell_writes_the_block_first(tmp_path):
+    """SIMH's QUIT typed in the lab's shell after ^W erased a word: the simulator
+    FLUSHes the UPDATEd block before it ends (leave_check.c), and the lab exits 0."""
+    child, disk = lab_in_a_terminal(tmp_path)
+    child.send("300 BLOCK 1024 90 FILL UPDATE\r")
+    child.expect(r"UPDATE  ok")
+    child.send("\x05")
+    child.expect("sim> ")
+    child.send("xyz \x17quit\r")
+    child.expect(r"QUIT: the FORTH's UPDATEd block\(s\) 300 were written to [^\r\n]* first")
+    child.expect(pexpect.EOF)
+    child.close()
+    assert child.exitstatus == 0
+    assert disk.read_bytes()[300 * 1024:301 * 1024] == b"Z" * 1024

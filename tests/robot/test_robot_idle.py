@@ -8,8 +8,9 @@ test_robot_moves.py), whose sign says little about the drift, so the entries
 wander instead of converging. Measured (every 5 s over 65 s, two targets):
 x 2049 -> 2036..2051 (true 2051.0; it walked 15 codes away in one run),
 y 2049 -> 2042 (true 2046.1), z 2090 -> 2096 (true 2093.0, on three kernel
-builds; 2093 on a fourth, issue 8's: z climbs to its true zero, not always
-past it); x, y, z stay within 25 counts of their
+builds; 2093 on a fourth, issue 8's; 2092 on a fifth, issue 16's LEAVE-ENTRY,
+whose 32 bytes shift every later instruction count: z climbs towards its true
+zero, not always to it or past it); x, y, z stay within 25 counts of their
 targets; t (MaxVel 0, never position-servoed) swings -190..+147 counts.
 Which entry ends where depends on the hunting's phase (any change of the
 kernel's timing moves it), so the bounds below are the phase-independent ones.
