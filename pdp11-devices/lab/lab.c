@@ -21,7 +21,10 @@
                                state run|pause, the amplifier rack on|off
                                (PLANT POWER), after every command
      M,addr,w0,...             memory (addr octal, up to 64 words a row): a dump
-   Commands, one per line:
+     E,what                    a command refused, and why
+   Commands, one per line (harness/lab/protocol.py's DEVICE_COMMANDS is the
+   server's copy of this list and of the rows above; tests/lab/test_lab_device.py
+   holds the three together):
      speed X     pace at X times the 11/23's (RATE instructions per wall
                  second), 0 < X <= 1000; 0 = full speed (the power-up setting)
      pause       stop simulated time at the next tick (the plant stops with it)
@@ -31,7 +34,7 @@
      dump a n    n words from octal address a (at most 28672)
      power on|off  the amplifier rack's switch (SET PLANT POWER), between
                  two ticks like every command
-   A bad command is answered by a row "E,what" and changes nothing.
+   A bad command is answered by an E row and changes nothing.
 
    Reporting: up to ten times the 11/23's pace every tick is reported. Faster
    than that (full speed) a tick's W and P rows are written only when 1/60 s
