@@ -24,6 +24,7 @@ import pexpect
 
 from harness.lab.feed import Lines, lab_row
 from harness.lab.sim_prompt_guard import SimPromptGuard, prompt_termios
+from harness.lab.protocol import device_command
 from harness.machine import plant_rows, simh
 from harness.machine.build import KERNEL, ROOT
 from harness.machine.console_session import (RACK_OFF, bye_halt, leave, say,
@@ -274,7 +275,8 @@ class Simulator:
         asyncio.get_running_loop().create_task(self.close(way.how))
 
     def command(self, text):
-        """A line to the LAB device (speed X, pause, run, step, watch, dump)."""
+        """A line to the LAB device (protocol.DEVICE_COMMANDS; another is Refused)."""
+        device_command(text)
         try:
             os.write(self.ctl, text.encode() + b"\n")
         except BlockingIOError:

@@ -29,7 +29,10 @@
                                the DRV11's CSR and OUTBUF, the AAV11-A's four
                                DACs (read through their SIMH register tables),
                                then the words at the panel's addresses
-   Commands, one per line:
+     E,what                    a command refused, and why
+   Commands, one per line (harness/lab/protocol.py's DEVICE_COMMANDS is the
+   server's copy of this list and of the rows above; tests/lab/test_lab_device.py
+   holds the three together):
      speed X     pace at X times the 11/23's (RATE instructions per wall
                  second), 0 < X <= 1000; 0 = full speed (the power-up setting)
      pause       stop simulated time at the next tick (the plant stops with it)
@@ -41,7 +44,7 @@
                  two ticks like every command
      panel [a...]  R rows from now on, with the words at octal addresses a...
                  (at most 8; the lab gives BLK and >IN); `panel off` stops them
-   A bad command is answered by a row "E,what" and changes nothing.
+   A bad command is answered by an E row and changes nothing.
 
    Reporting: up to ten times the 11/23's pace every tick is reported. Faster
    than that (full speed) a tick's W and P rows are written only when 1/60 s

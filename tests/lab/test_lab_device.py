@@ -6,8 +6,10 @@ import time
 
 import pytest
 
+from harness.lab.protocol import DEVICE_COMMANDS, DEVICE_ROWS, Refused, device_command, \
+    device_help
 from harness.machine import simh
-from harness.machine.build import KERNEL, fresh_disk
+from harness.machine.build import KERNEL, ROOT, fresh_disk
 from harness.machine.plant_rows import COLUMNS
 
 TYPED = "1000 LOAD\rSet.Up.Robot\r800 800 400 0 Abs.Move\r"
@@ -144,3 +146,37 @@ def test_panel_rows_show_registers_psw_and_device_registers(tmp_path, ctl):
     assert last[18] == "1234"                        # the word asked for
     assert [e[0] for e in rows(out, "E")] == [
         "panel takes at most 8 even octal addresses below 160000"]
+
+
+# ---- the device's side of the lab protocol: one list, in lab.c and protocol.py --------
+LAB_C = ROOT / "pdp11-devices" / "lab" / "lab.c"
+
+
+def header_section(title, until):
+    """The lines of lab.c's header comment from `title` up to `until`."""
+    text = LAB_C.read_text().split("*/", 1)[0]
+    return text.split(title, 1)[1].split(until, 1)[0].splitlines()
+
+
+def test_the_device_refuses_an_unknown_command_with_the_protocols_list(tmp_path, ctl):
+    out = tmp_path / "lab"
+    ctl("fly\n")
+    simh.run(f"load {KERNEL}\nattach lab {out}\nstep 11000\ndetach lab\n")
+    assert [e[0] for e in rows(out, "E")] == [f"commands: {device_help()}".split(",")[0]]
+    assert f"E,commands: {device_help()}\n" in out.read_text()
+
+
+def test_lab_c_header_lists_the_protocols_commands_and_rows():
+    commands = [line.split()[0] for line in header_section("Commands, one per line", "A bad")
+                if line.startswith("     ") and line.split() and line[5] != " "]
+    assert commands == list(DEVICE_COMMANDS)
+    kinds = [line.split(",")[0].strip() for line in header_section("Rows, one per line", "Commands")
+             if line.startswith("     ") and line[5] != " " and "," in line]
+    assert kinds == list(DEVICE_ROWS)
+
+
+def test_the_server_writes_only_the_devices_commands():
+    for name, args in DEVICE_COMMANDS.items():
+        assert device_command(f"{name} {args}".rstrip())
+    with pytest.raises(Refused, match="no command 'fly'"):
+        device_command("fly 3")

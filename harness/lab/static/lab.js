@@ -404,12 +404,38 @@ function drawTable() {
         return `<td${moving && n === "Command.Status" ? ' class="moving"' : ""}>${v}</td>`;
       }).join("") + "</tr>";
   });
-  const singles = lab.single.filter((n) => n in lab.servo).map((n) => `${n} = ${lab.servo[n]}`);
+  const singles = lab.single.filter((n) => n in lab.servo && !(n in ASN_WORDS))
+    .map((n) => `${n} = ${lab.servo[n]}`);
   const note = known.length
     ? `${singles.join(", ")} \u00b7 block 1000's variables, read each 60 Hz tick`
     : "The servo's variables appear once the blocks define them (1000 LOAD): they are found by name in the dictionary.";
   html += `<tr class="note"><td colspan="${lab.perAxis.length + 2}">${note}</td></tr>`;
   if (html !== tableHtml) body.innerHTML = tableHtml = html;   // unchanged: no relayout
+  drawAsn();
+}
+
+// ---- the ASN (blocks 1070-1078, docs/learning.md): trial, steps, payoff, weights --------------
+const ASN_WORDS = { "Trial.No": "trials done", "Steps": "steps", "Z.Was": "payoff", "Late": "late moves" };
+let asnText = "", asnWeights = "";
+function drawAsn() {
+  const box = document.getElementById("asn");
+  box.hidden = !("Trial.No" in lab.servo);
+  if (box.hidden) return;
+  const text = "ASN: " + Object.entries(ASN_WORDS).map(([n, label]) => `${label} ${lab.servo[n]}`).join(", ");
+  if (text !== asnText) document.getElementById("asn-text").textContent = asnText = text;
+  const w = lab.servo.Weights;
+  if (!w || w.join() === asnWeights) return;
+  asnWeights = w.join();
+  // 4 rows (+x -x +y -y) of 18 inputs (fields along x, then y): red positive, blue negative
+  const canvas = document.getElementById("asn-weights"), g = canvas.getContext("2d");
+  const cols = w.length / 4, cw = canvas.width / cols, ch = canvas.height / 4;
+  const top = Math.max(1, ...w.map(Math.abs));
+  w.forEach((v, i) => {
+    const a = Math.abs(v) / top;
+    g.fillStyle = v >= 0 ? `rgba(200,40,40,${a})` : `rgba(40,80,200,${a})`;
+    g.clearRect((i % cols) * cw, Math.floor(i / cols) * ch, cw, ch);
+    g.fillRect((i % cols) * cw, Math.floor(i / cols) * ch, cw - 1, ch - 1);
+  });
 }
 
 // ---- the frame loop -------------------------------------------------------------------------
