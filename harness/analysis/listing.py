@@ -218,10 +218,13 @@ class Listing:
             out.append(f"Block {blk}")
             for line, text in enumerate(self.blocks[blk]):
                 out.append(f"{line:2} {text.rstrip()}")
-                for span in self.spans.get((blk, line), ()):
-                    out.extend(self._format_span(span))
+                out.extend(self.line_code(blk, line))
             out.append("")
         return "\n".join(out)
+
+    def line_code(self, blk, line):
+        """The rows of what block `blk`'s line `line` laid down (the lab's program pane)."""
+        return [row for span in self.spans.get((blk, line), ()) for row in self._format_span(span)]
 
     def _format_span(self, span):
         rows = []

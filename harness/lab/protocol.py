@@ -41,6 +41,8 @@ FROM_PAGE = {
     "step": {},
     "break": {"word": Rule(str, 31)},            # a breakpoint on a FORTH word (breakpoints.py)
     "nobreak": {},
+    "program": {"block": int},                   # a block and its listing (program_pane.py)
+    "check": {"exercise": (1, 2, 3, 4, 5)},      # run docs/exercises.md's check (lesson_checks.py)
 }
 
 TO_PAGE = {
@@ -54,6 +56,9 @@ TO_PAGE = {
     "input": {"waiting": int, "room": int},              # answer to `key`: the queue
     "error": {"why": str},
     "ended": {"safe": (True, False, None)},
+    "program": {"block": int, "lines": list, "code": list,      # the program pane
+                "why": Rule(str, nullable=True)},
+    "checked": {"exercise": int, "text": str, "ok": (True, False, None)},   # a check's output
 }
 
 

@@ -18,9 +18,10 @@ from pathlib import Path
 
 from aiohttp import WSMsgType, web
 
-from harness.lab import breakpoints, guard, protocol, shell_terminal
+from harness.lab import breakpoints, guard, lesson_checks, protocol, shell_terminal
 from harness.lab.feed import plant_row, thin, words_of
 from harness.lab.front_panel import PANEL_WORDS, WordIndex, panel
+from harness.lab.program_pane import ProgramPane
 from harness.lab.rack_hint import RackHint
 from harness.lab.servo_watch import PER_AXIS, SINGLE, ServoWatch
 from harness.lab.session import SPEEDS, Simulator
@@ -54,6 +55,9 @@ class Lab:
         self.shell_echo = None           # the shell's terminal, when it types too
         self.watch = ServoWatch(symbols)
         self.rack_hint = RackHint()
+        self.program = ProgramPane(disk)     # the program pane's blocks and listings
+        self.disk = disk
+        self.checking = set()                # exercises whose check runs now
         self.words = WordIndex({address: name for name, address in symbols.items()})
         self.panel_command = "panel " + " ".join(f"{symbols[name] + BODY:o}"
                                                  for name in PANEL_WORDS)
@@ -273,6 +277,25 @@ class Lab:
     def on_nobreak(self, ws, message):
         self.must_hold(ws)
         asyncio.ensure_future(self._at_sim(breakpoints.clear_lines()))
+
+    def on_program(self, ws, message):   # read only: the page's editor types at the FORTH
+        async def answer():
+            self.tell(ws, await asyncio.to_thread(self.program.message, message["block"]))
+        asyncio.ensure_future(answer())
+
+    def on_check(self, ws, message):     # the lessons: an exercise's own check, on the host
+        exercise = message["exercise"]
+        if exercise in self.checking:
+            raise protocol.Refused(f"exercise {exercise}'s check is running already")
+        self.checking.add(exercise)
+
+        async def answer():
+            try:
+                ok, text = await lesson_checks.run_check(exercise, self.disk)
+            finally:
+                self.checking.discard(exercise)
+            self.broadcast({"t": "checked", "exercise": exercise, "text": text, "ok": ok})
+        asyncio.ensure_future(answer())
 
     def must_hold(self, ws):
         """Breakpoints are typed at sim>: only by the keyboard's holder."""

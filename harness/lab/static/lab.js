@@ -107,6 +107,8 @@ socket.onmessage = (event) => {
   if (m.t === "con") term.write(m.d);
   else if (m.t === "data") { takeData(m); showInput(); }
   else if (m.t === "history") showHistory(m.rows);   // lab-panel.js
+  else if (m.t === "program") showProgram(m);        // lab-program.js
+  else if (m.t === "checked") showChecked(m);        // lab-teach.js
   else if (m.t === "hello") {
     learnPlant(m.plant);
     Object.assign(lab, { stops: m.stops, perAxis: m.per_axis, single: m.single, status: m.status });

@@ -1,0 +1,154 @@
+"""The program pane and the lessons in Debian's headless Chromium, as a teacher would
+use them: the block being loaded shown with its listing and the line the machine
+stopped in; a block edited in the page, typed at the FORTH, FLUSHed and found on
+the disk image; a lesson's line typed by its button; an exercise's check run; the
+light theme and the largest text fit both projector sizes. Screenshots in
+build/test-artifacts/lab-program-*.png and lab-teach-*.png."""
+import pytest
+from selenium.webdriver.common.by import By
+from selenium.webdriver.support.ui import Select
+
+from harness.analysis.listing import BLOCK_BYTES
+
+from labpage import ARTIFACTS, click, js, type_line, wait_for
+from test_browser import accessibility_violations
+
+LAB_SPEED = "real"                  # loading 1000-1012 takes seconds: time to pause in it
+EDITED = 200                        # a blank block of the pristine disk
+
+
+@pytest.fixture(scope="module")
+def page(lab_server, browser):
+    browser.execute_cdp_cmd("Emulation.clearDeviceMetricsOverride", {})
+    browser.get(lab_server.url)
+    browser.execute_script("localStorage.clear()")
+    browser.refresh()
+    wait_for("the page to connect", lambda: browser.execute_script(
+        "return window.lab && window.lab.connected && window.lab.perAxis.length > 0"))
+    return browser
+
+
+def shown_lines(page):
+    return js(page, "[...document.querySelectorAll('#program-text .pl-text')]"
+                    ".map(e => e.textContent)")
+
+
+def test_the_pane_follows_the_load_and_marks_the_line_it_stopped_in(page):
+    click(page, '#views button[data-view="program-panel"]')
+    assert js(page, "document.getElementById('robot-panel').hidden")
+    page.find_element(By.CSS_SELECTOR, "#terminal textarea").send_keys("1000 LOAD\n")
+    wait_for("the front panel to show a block loading",
+             lambda: (js(page, "window.lab.panel && window.lab.panel.loading") or {})
+             .get("block", 0) >= 1002, timeout=60)
+    click(page, "#pause")
+    wait_for("the pause", lambda: js(page, "window.lab.status.state") == "pause")
+    where = js(page, "window.lab.panel.loading")
+    assert where, "the load ended before the pause: nothing to mark"
+    wait_for("the pane to show that block",
+             lambda: js(page, "window.lab.program.block") == where["block"])
+    current = wait_for("the line marked", lambda: page.find_elements(
+        By.CSS_SELECTOR, "#program-text .pl.current"))
+    assert len(current) == 1 and int(current[0].get_attribute("data-line")) == where["line"]
+    assert f"stopped in block {where['block']}, line {where['line']}" in \
+        page.find_element(By.ID, "program-where").text
+    code = js(page, "window.lab.program.code")       # the listing's rows, line by line
+    assert sum(map(len, code)) > 5 and all(r.strip()[:6].isdigit() for rows in code for r in rows)
+    page.save_screenshot(str(ARTIFACTS / "lab-program-stopped.png"))
+    click(page, "#pause")                            # Run: the load goes on
+    wait_for("1000 LOAD's ok", lambda: "ok" in js(page, "window.lab.screen()").split(
+        "1000 LOAD", 1)[1], timeout=120)
+    assert not page.find_elements(By.CSS_SELECTOR, "#program-text .pl.current")
+
+
+def test_a_block_listed_by_number_shows_what_each_line_laid_down(page):
+    field = page.find_element(By.ID, "program-block")
+    field.clear()
+    field.send_keys("1006\n")
+    wait_for("block 1006", lambda: js(page, "window.lab.program.block") == 1006)
+    lines, code = shown_lines(page), js(page, "window.lab.program.code")
+    assert "Velocity" in lines[7] and any("Velocity" in row for row in code[7])
+    assert "Velocity" in page.find_element(By.ID, "program-text").text
+
+
+def test_a_block_edited_in_the_page_is_typed_at_the_forth_and_flushed(page, lab_server):
+    field = page.find_element(By.ID, "program-block")
+    field.clear()
+    field.send_keys(f"{EDITED}\n")
+    wait_for("the blank block", lambda: js(page, "window.lab.program.why") == f"block {EDITED} is blank")
+    click(page, "#program-edit")
+    inputs = page.find_elements(By.CSS_SELECTOR, "#program-lines input")
+    assert len(inputs) == 16 and inputs[0].get_attribute("maxlength") == "64"
+    title = "( squares, typed in the lab page )"
+    body = ": SQUARE ( n -- n*n )  DUP * ;"
+    inputs[0].send_keys(title)
+    inputs[1].send_keys(body)
+    page.save_screenshot(str(ARTIFACTS / "lab-program-editor.png"))
+    before = js(page, "window.lab.screen()").count(" ok")
+    click(page, "#program-update")
+    wait_for("the editor's lines to be answered",
+             lambda: js(page, "window.lab.screen()").count(" ok") >= before + 4)
+    screen = js(page, "window.lab.screen()")
+    assert f"1 P {body}" in screen and "Error" not in screen
+    on_disk = lab_server.disk.read_bytes()[EDITED * BLOCK_BYTES:][:BLOCK_BYTES]
+    assert title.encode() not in on_disk             # UPDATEd, not yet written
+    click(page, "#program-flush")
+    wait_for("the disk to hold the block", lambda: lab_server.disk.read_bytes()[
+        EDITED * BLOCK_BYTES:][:128].startswith(title.ljust(64).encode() + body.encode()))
+    wait_for("the pane to read it back",
+             lambda: shown_lines(page)[1].strip() == f"1 {body}", timeout=20)
+    assert f"{EDITED} LOAD  7 SQUARE . 49" in type_line(page, f"{EDITED} LOAD  7 SQUARE .")
+
+
+def test_a_lesson_types_its_line_and_an_exercise_runs_its_check(page):
+    click(page, '#views button[data-view="teach-panel"]')
+    assert page.find_element(By.ID, "teach-panel").is_displayed()
+    steps = page.find_elements(By.CSS_SELECTOR, "#teach-body li")
+    assert len(steps) == 6 and "1000 LOAD" in steps[0].text       # README's first session
+    before = js(page, "window.lab.screen()").count("Read.Counter")
+    page.find_elements(By.CSS_SELECTOR, "#teach-body .teach-do")[4].click()
+    wait_for("the lesson's line typed", lambda: js(page, "window.lab.screen()")
+             .count("0 Read.Counter . 1 Read.Counter .") > before)
+    Select(page.find_element(By.ID, "teach-lesson")).select_by_index(2)
+    assert "missing ELSE" in page.find_element(By.ID, "teach-body").text or \
+        "ramp" in page.find_element(By.ID, "teach-body").text
+    click(page, "#teach-check")
+    text = wait_for("exercise 2's check", lambda: (js(page, "window.lab.checks[2]") or {})
+                    .get("text"), timeout=240)
+    assert js(page, "window.lab.checks[2].ok") is True
+    assert "$ python -m harness tick --ticks 8" in text and "Velocity" in text
+    assert "Velocity" in page.find_element(By.ID, "teach-measured").text
+
+
+@pytest.mark.parametrize("theme", ["dark", "light"])
+@pytest.mark.parametrize("width, height", [(1280, 720), (1920, 1080)])
+def test_the_teaching_views_fit_both_projectors_in_both_themes(page, theme, width, height):
+    """No scrolling with the lessons or the program shown, in both themes, at the
+    largest text; the panes scroll inside themselves. axe-core: nothing serious."""
+    if js(page, "window.lab.theme") != theme:
+        click(page, "#theme")
+    for _ in js(page, "window.lab.fontScales"):
+        if not js(page, "document.getElementById('font-up').disabled"):
+            click(page, "#font-up")
+    assert js(page, "window.lab.fontStep") == len(js(page, "window.lab.fontScales")) - 1
+    page.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",
+                         {"width": width, "height": height, "deviceScaleFactor": 1, "mobile": False})
+    try:
+        wait_for("the layout", lambda: js(page, "window.innerWidth") == width)
+        for view in ("teach-panel", "program-panel"):
+            click(page, f'#views button[data-view="{view}"]')
+            page.execute_script("window.dispatchEvent(new Event('resize'))")
+            page.execute_script("return new Promise(r => setTimeout(r, 300))")
+            scroll = js(page, "[document.documentElement.scrollWidth, "
+                              "document.documentElement.scrollHeight]")
+            assert scroll[0] <= width and scroll[1] <= height, (view, scroll)
+            box = js(page, f"document.getElementById('{view}').getBoundingClientRect().toJSON()")
+            assert box["width"] > 200 and box["height"] > 150, (view, box)
+            assert box["right"] <= width and box["bottom"] <= height, (view, box)
+            buttons = js(page, "[...document.querySelectorAll('header button, #views button')]"
+                               ".map(b => b.getBoundingClientRect().right)")
+            assert max(buttons) <= width, "a button is cut off"
+            page.save_screenshot(str(ARTIFACTS / f"lab-{view.split('-')[0]}-{theme}-{width}.png"))
+            violations = accessibility_violations(page)
+            assert not [v for v in violations if v[1] in ("serious", "critical")], violations
+    finally:
+        page.execute_cdp_cmd("Emulation.clearDeviceMetricsOverride", {})
