@@ -42,6 +42,8 @@ def test_the_pane_follows_the_load_and_marks_the_line_it_stopped_in(page):
              .get("block", 0) >= 1002, timeout=60)
     click(page, "#pause")
     wait_for("the pause", lambda: js(page, "window.lab.status.state") == "pause")
+    wait_for("the badge (the page draws with the robot hidden)",
+             lambda: page.find_element(By.ID, "state").text == "PAUSED")
     where = js(page, "window.lab.panel.loading")
     assert where, "the load ended before the pause: nothing to mark"
     wait_for("the pane to show that block",

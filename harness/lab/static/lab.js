@@ -449,7 +449,7 @@ function frame(now) {
   if (lab.dirty && AXES.length) {     // nothing to draw before the hello
     lab.dirty = false;
     drawStatus();
-    drawRobot();
+    if (!document.getElementById("robot-panel").hidden) drawRobot();   // another view (lab-teach.js)
     drawScope();
     lab.frames = (lab.frames || 0) + 1;
   }
