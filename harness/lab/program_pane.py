@@ -54,7 +54,7 @@ class ProgramPane:
                 listing = self.lister(block, block, image=self.image)
                 code = [listing.line_code(block, line) for line in range(len(lines))]
             except ListingError as err:
-                why = f"no listing: {err}"
+                why = f"no listing: {err}".replace(str(self.image), "the lab's disk")
         message = {"t": "program", "block": block, "lines": lines, "code": code, "why": why}
         self._cache[block] = (stamp, message)
         return message

@@ -1,0 +1,81 @@
+"""The server's side of the program pane and the lessons (issue 18, items 4-5): a
+block asked for comes back with its lines and the code each laid down; a block
+outside the disk, a bad field, an exercise that is not one of the five are
+refused with a reason; an exercise's check runs its commands and sends what they
+printed; a second click while one runs is refused."""
+import asyncio
+import json
+
+import aiohttp
+
+from harness.lab import lesson_checks
+from harness.lab.program_pane import ProgramPane, block_lines
+from harness.machine.build import PRISTINE_DISK
+
+TIMEOUT = 60
+
+
+def talk(server, messages, wanted):
+    """Send `messages`, collect the answers whose kind is in `wanted` until one of
+    each message has its answer (len(messages) answers)."""
+    async def run():
+        async with aiohttp.ClientSession() as http:
+            async with http.ws_connect(f"http://127.0.0.1:{server.port}/ws?token={server.token}",
+                                       headers={"Origin": f"http://127.0.0.1:{server.port}"}) as ws:
+                for message in messages:
+                    await ws.send_str(json.dumps(message))
+                answers = []
+                while len(answers) < len(messages):
+                    msg = await ws.receive(timeout=TIMEOUT)
+                    m = json.loads(msg.data)
+                    if m["t"] in wanted:
+                        answers.append(m)
+                return answers
+    return asyncio.run(run())
+
+
+def test_a_block_comes_with_its_listing_and_bad_asks_are_refused(lab_server):
+    answers = talk(lab_server, [
+        {"t": "program", "block": 1008},
+        {"t": "program", "block": 10240},
+        {"t": "program", "block": "1008"}], {"program", "error"})
+    [bad] = [a for a in answers if a["t"] == "error"]        # answered at once
+    good, outside = sorted((a for a in answers if a["t"] == "program"), key=lambda a: a["block"])
+    assert good["t"] == "program" and good["why"] is None and len(good["lines"]) == 16
+    assert good["lines"][2].startswith("CODE Interrupt.Servo") or "Interrupt.Servo" in "".join(
+        good["lines"])
+    assert any("MOV" in row for rows in good["code"] for row in rows)   # the disassembly
+    assert outside["why"] == "no block 10240: the disk has blocks 0..10239"
+    assert bad["t"] == "error" and "field 'block' is str, not int" in bad["why"]
+
+
+def test_an_exercise_check_runs_its_commands_and_a_second_click_is_refused(lab_server):
+    refused, again, checked = talk(lab_server, [      # the errors come at once
+        {"t": "check", "exercise": 6},
+        {"t": "check", "exercise": 2},
+        {"t": "check", "exercise": 2}], {"checked", "error"})
+    assert refused["t"] == "error" and "not one of 1, 2, 3, 4, 5" in refused["why"]
+    assert again == {"t": "error", "why": "exercise 2's check is running already"}
+    assert checked["exercise"] == 2 and checked["ok"] is True
+    assert checked["text"].count("$ python -m harness tick --ticks 8") == 2
+    assert "Velocity" in checked["text"] and "Ramp.Servo" in checked["text"]
+
+
+def test_block_lines_and_the_cache_follow_the_disk(tmp_path):
+    image = tmp_path / "robot.dsk"
+    image.write_bytes(PRISTINE_DISK.read_bytes())
+    pane = ProgramPane(image)
+    assert pane.message(200)["why"] == "block 200 is blank"
+    data = bytearray(image.read_bytes())
+    data[200 * 1024:200 * 1024 + 10] = b"( changed "
+    image.write_bytes(bytes(data))
+    assert block_lines(image, 200)[0].startswith("( changed ")
+    changed = pane.message(200)                       # the image changed: read again
+    assert changed["lines"][0].startswith("( changed ") and "the lab's disk" in changed["why"]
+    assert str(image) not in changed["why"]           # no host path on the projector
+
+
+def test_a_check_is_shown_as_the_reader_types_it():
+    assert lesson_checks.shown(lesson_checks.CHECKS[4][1][0]) == \
+        "python -m harness timing --servo idle"
+    assert lesson_checks.tail("a\nb\nc", 2) == "...\nb\nc"
