@@ -177,10 +177,20 @@ CODE SCAN  ( a u c -- a' u' )  \ first c, or the end
 CODE SKIP  ( a u c -- a' u' )  \ first character not c, or the end
   NE SCAN-LOOP,  END-CODE
 
-\ (FIND): search one vocabulary chain, case-insensitively; smudged words
-\ never match (bit 5 stays in the compared length)
-CODE (FIND)  ( a u lfa -- nfa | 0 )
-  W S )+ MOV,  RP -) IP MOV,
+\ The dictionary search's two halves (CODE words WID-FIND SEARCH-ORDER CHAIN in
+\ interp.fs). A word list has 32 chains; a name's chain is its upper-cased first
+\ character plus twice its length, mod 32 (the metacompiler's theader hashes alike).
+\ CHAIN-OFFSET (JSR PC): R0 := the byte offset of that chain in a word list, for
+\ the name at 2(S), length (S) (at least 1)
+LABEL CHAIN-OFFSET
+  R0 2 S I) MOV,  R0 R0 ) MOVB,
+  141O # R0 CMP,  GE IF,  172O # R0 CMP,  LE IF,  R0 40O # SUB,  THEN,  THEN,
+  R0 S ) ADD,  R0 S ) ADD,  R0 #chains 1- INVERT # BIC,  R0 R0 ADD,  PC RTS,  END-CODE
+\ WALK (JSR PC): W := the name field of the first header from LFA W on (0: none)
+\ down its chain whose name is the one at 2(S), length (S), compared
+\ case-insensitively; a smudged word never matches (bit 5 stays in the compared
+\ length). Z is set when none matched. R0 T R3 IP are used.
+LABEL WALK
   W TST,  NE IF,
     BEGIN,  \ a header of another length costs 6 instructions
       R0 2 W I) MOVB,  R0 177700O # BIC,  R0 S ) CMP,
@@ -195,16 +205,14 @@ CODE (FIND)  ( a u lfa -- nfa | 0 )
           THEN,
         EQ WHILE,
           R0 DEC,
-          EQ IF,
-            W RP )+ MOV,  IP RP )+ MOV,  S 2 # ADD,  S ) W MOV,  S ) 2 # ADD,  NEXT,
-          THEN,
+          EQ IF,  W RP )+ MOV,  W 2 # ADD,  PC RTS,  THEN,
         REPEAT,
         W RP )+ MOV,
       THEN,
       W W ) MOV,
     EQ UNTIL,
   THEN,
-  IP RP )+ MOV,  S 2 # ADD,  S ) CLR,  NEXT,  END-CODE
+  PC RTS,  END-CODE
 
 \ console (DL11 at 177560): receive by interrupt into a ring of 511 characters;
 \ when the ring is full further characters are dropped and counted (RXLOST)

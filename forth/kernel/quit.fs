@@ -46,7 +46,7 @@ VARIABLE BEST  ( -- a )
   REPEAT DROP ;
 : WORD-AT  ( addr -- nfa | 0 )  \ the word whose code or body holds addr
   0 BEST !  DUP HERE U< IF VOC-LINK @ BEGIN ?DUP WHILE   \ nothing at or above HERE
-    4 0 DO DUP 8 - I 2* + @ ROT SWAP BEST-IN SWAP LOOP @
+    #CHAINS 0 DO DUP LINK>WID I 2* + @ ROT SWAP BEST-IN SWAP LOOP @
   REPEAT THEN DROP BEST @ ;
 : >NAME  ( xt -- nfa | 0 )  DUP WORD-AT DUP IF TUCK NAME> <> IF DROP 0 THEN ELSE NIP THEN ;
 : .NAME  ( nfa -- )  COUNT 31 AND TYPE ;
@@ -117,7 +117,7 @@ CREATE ERROR-TEXTS  ( -- a )
   FALSE #ORDER @ 2* CONTEXT + CONTEXT ?DO OVER I @ = OR 2 +LOOP NIP ;
 : .ELSEWHERE  ( -- )
   VOC-LINK @ BEGIN ?DUP WHILE
-    DUP 8 -  DUP VOC-NAME OVER IN-ORDER? 0= AND IF
+    DUP LINK>WID  DUP VOC-NAME OVER IN-ORDER? 0= AND IF
       WHAT 2@ 2 PICK WID-FIND IF
         ."  (a word of " DUP VOC-NAME .NAME ." : type " VOC-NAME .NAME
         ."  to select it again)" DROP EXIT

@@ -3,9 +3,9 @@
 : .S  ( -- )  \ TOOLS: the stack, deepest first
   ." <" DEPTH 0 .R ." > "  DEPTH DUP 0 ?DO DUP I - PICK . LOOP DROP ;
 VARIABLE COLUMN  ( -- a )
-CREATE CURSORS 8 ALLOT  ( -- a ) \ WORDS' place in each chain
+CREATE CURSORS CHAIN-BYTES ALLOT  ( -- a ) \ WORDS' place in each chain
 : WORDS  ( -- )  \ TOOLS: the CONTEXT vocabulary, newest first (its chains merged)
-  0 COLUMN !  CONTEXT @ CURSORS 8 CMOVE
+  0 COLUMN !  CONTEXT @ CURSORS CHAIN-BYTES CMOVE
   BEGIN CURSORS NEWEST-SLOT ?DUP WHILE
     DUP @ DUP 2+ C@ 32 AND 0= IF
       COLUMN @ 64 > IF CR 0 COLUMN ! THEN
@@ -47,10 +47,10 @@ CREATE CURSORS 8 ALLOT  ( -- a ) \ WORDS' place in each chain
 \ ---- FORGET and MARKER -----------------------------------------------------------
 : TRIM-CHAIN  ( lfa head -- )  \ unlink chain entries at or above lfa
   BEGIN 2DUP @ SWAP U< 0= OVER @ 0<> AND WHILE DUP @ @ OVER ! REPEAT 2DROP ;
-: TRIM  ( lfa body -- )  4 0 DO 2DUP I 2* + TRIM-CHAIN LOOP 2DROP ;
+: TRIM  ( lfa body -- )  #CHAINS 0 DO 2DUP I 2* + TRIM-CHAIN LOOP 2DROP ;
 : TRIM-VOCS  ( lfa -- )  \ trim every vocabulary; drop forgotten vocabularies
   VOC-LINK BEGIN DUP @ WHILE
-    DUP @ 2 PICK U< 0= IF DUP @ @ OVER ! ELSE 2DUP @ 8 - TRIM @ THEN
+    DUP @ 2 PICK U< 0= IF DUP @ @ OVER ! ELSE 2DUP @ LINK>WID TRIM @ THEN
   REPEAT 2DROP ;
 : RESTORE-VECTORS  ( lfa -- )  \ no vector may point into forgotten code
   1000O 0 DO
