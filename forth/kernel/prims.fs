@@ -165,12 +165,6 @@ CODE FILL  ( a n c -- )  \ CORE
   R0 S )+ MOV,  T S )+ MOV,  W S )+ MOV,
   T TST,  NE IF,  BEGIN,  W )+ R0 MOVB,  T DEC,  EQ UNTIL,  THEN,  NEXT,  END-CODE
 
-\ (BELOW): a chain runs from the newest header down, so the headers above an
-\ address are skipped with one comparison each (WORD-AT, trap reports)
-CODE (BELOW)  ( a lfa -- a lfa' )  \ the chain's first header at or below a
-  R0 S ) MOV,  BEGIN,  2 S I) R0 CMP,  HI WHILE,  R0 R0 ) MOV,  REPEAT,  S ) R0 MOV,
-  NEXT,  END-CODE
-
 \ parsing helpers: with a blank delimiter any control character is a blank
 CODE SCAN  ( a u c -- a' u' )  \ first c, or the end
   EQ SCAN-LOOP,  END-CODE
