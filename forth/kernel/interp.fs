@@ -92,11 +92,13 @@ CODE SEARCH-ORDER  ( a u -- nfa | 0 )  \ in CONTEXT's #ORDER word lists, in orde
     2DUP LOCAL-FIND ?DUP IF NIP NIP EXIT THEN THEN THEN
   SEARCH-ORDER ;
 : UMAX  ( u1 u2 -- u )  2DUP U< IF SWAP THEN DROP ;
-: NEWEST-SLOT  ( heads -- slot | 0 )  \ the cell holding the newest header
-  0 SWAP #CHAINS 0 DO
-    DUP @ IF OVER 0= IF NIP DUP ELSE OVER @ OVER @ U< IF NIP DUP THEN THEN THEN
-    2+
-  LOOP DROP ;
+CODE NEWEST-SLOT  ( heads -- slot | 0 )  \ the cell holding the newest header
+  W S ) MOV,  R3 W MOV,  R3 CHAIN-BYTES # ADD,  R0 CLR,  T CLR,
+  BEGIN,
+    W ) R0 CMP,  LO IF,  R0 W ) MOV,  T W MOV,  THEN,
+    W 2 # ADD,  R3 W CMP,
+  EQ UNTIL,
+  S ) T MOV,  NEXT,  END-CODE
 : NEWEST  ( voc -- lfa | 0 )  NEWEST-SLOT DUP IF @ THEN ;
 : NFA>XT  ( nfa -- xt 1 | xt -1 )  \ 1 when IMMEDIATE
   DUP NAME> SWAP C@ 128 AND IF 1 ELSE -1 THEN ;

@@ -1,7 +1,7 @@
 """Which memory words the lab watches: the 1983 servo's variables, found by name
 in the running FORTH's dictionary (pure logic: commands out, memory rows in).
 
-Every probe the lab asks the LAB device for the FORTH vocabulary's four chain
+Every probe the lab asks the LAB device for the FORTH vocabulary's chain
 heads and DP (HERE). When they change (a LOAD, a FORGET) it dumps the dictionary,
 finds the servo's words (block 1000's arrays and Dir, defined above the kernel's FENCE) and watches their cells.
 """
@@ -20,7 +20,7 @@ def signed(word):
 
 class ServoWatch:
     def __init__(self, symbols):
-        self.vocabulary = symbols["FORTH"] + BODY    # its four chain heads
+        self.vocabulary = symbols["FORTH"] + BODY    # its chain heads
         self.dp = symbols["DP"] + BODY
         self.fence = symbols["FENCE"] + BODY      # the kernel ends here: its STATE is not block 1000's
         self.memory = Memory()
@@ -32,7 +32,7 @@ class ServoWatch:
 
     def probe(self):
         """The commands that read the chain heads and HERE."""
-        return [f"dump {self.vocabulary:o} 4", f"dump {self.fence:o} 1", f"dump {self.dp:o} 1"]
+        return [f"dump {self.vocabulary:o} {CHAINS}", f"dump {self.fence:o} 1", f"dump {self.dp:o} 1"]
 
     def _state(self):
         return tuple(self.memory.word(self.vocabulary + 2 * i) for i in range(CHAINS)) + (
