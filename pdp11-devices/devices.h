@@ -63,8 +63,12 @@ void console_pacing_rate_changed (int32 old_rate);
 /* The scripted runs' stop at the prompt (prompt_cue.c). */
 void prompt_cue_install (void);
 
-/* RL02 write-through (rl_durable.c). */
+/* RL02 write-through (rl_durable.c), one writer per image (rl_one_writer.c). */
 void rl_durable_install (void);
+void rl_one_writer_install (void);
+
+/* QUIT, EXIT and BYE at sim> FLUSH the FORTH's blocks first (leave_check.c). */
+void leave_check_install (void);
 
 /* The lab bench's device (lab.c): its part of a rate change. */
 void lab_rate_changed (int32 old_rate);

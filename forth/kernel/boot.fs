@@ -29,10 +29,30 @@ LABEL TICK  ( line clock, vector 100, until a servo is installed: count ticks )
 \ receive interrupt on, free space filled, priority 0, then the thread holding COLD.
 LABEL ENTRY
   340O # MTPS,  RP RP0 # MOV,  S S0 # MOV,
-  RXHEAD @# CLR,  RXTAIL @# CLR,  RXLOST @# CLR,  TICKS @# CLR,  TICKS 2 + @# CLR,  THROW-CELL @# ' THROW # MOV,
+  RXHEAD @# CLR,  RXTAIL @# CLR,  RXLOST @# CLR,  XOFF-HELD @# CLR,  RXDROP @# CLR,  TICKS @# CLR,  TICKS 2 + @# CLR,  THROW-CELL @# ' THROW # MOV,
   177560O @# 100O # MOV,
-  \ free dictionary space holds a reserved instruction (000010): a wild jump past
-  \ HERE traps and is reported instead of running into HALT (zero) and stopping
-  R0 ' DP >BODY @# MOV,  BEGIN,  R0 )+ 10O # MOV,  LIMIT # R0 CMP,  HIS UNTIL,
+  \ memory management on, in kernel mode, every page mapped to itself (18-bit
+  \ mode): it costs no instruction; its one job is page 6's length, which ends
+  \ at S0, so a word that takes more than the data stack holds traps (MMU-TRAP)
+  R0 KIPDR # MOV,  T KIPAR # MOV,  W CLR,
+  BEGIN,  R0 )+ 77406O # MOV,  T )+ W MOV,  W 200O # ADD,  T KIPAR 16 + # CMP,  EQ UNTIL,
+  KIPDR 12 + @# S0 140000O - 100O / 1- 10O LSHIFT 6 + # MOV,   \ page 6 ends at S0
+  KIPAR 14 + @# 7600O # MOV,   \ page 7: the I/O page
+  MMR0 @# 1 # MOV,
+  \ free dictionary space holds a reserved instruction (000040): a wild jump past
+  \ HERE traps and is reported instead of running into HALT (zero) and stopping;
+  \ run as a thread it is the xt 40, and address 40 holds another (build.fs)
+  R0 ' DP >BODY @# MOV,  BEGIN,  R0 )+ 40O # MOV,  LIMIT # R0 CMP,  HIS UNTIL,
   0 # MTPS,
   IP HERE 6 + # MOV,  NEXT,  ' COLD ,  END-CODE
+
+\ The simulator's QUIT, EXIT and BYE at sim> start the machine here when blocks
+\ are UPDATEd (pdp11-devices/leave_check.c), whatever it was doing: fresh stacks,
+\ then the thread ['] FLUSH CATCH DROP (BYE): a failed write is reported by the
+\ driver and its block stays UPDATEd (the simulator reads BUF-UPD afterwards);
+\ (BYE)'s HALT is where the simulator sees it done. Headerless, so that no
+\ dictionary chain grows (FIND's timing, and the recorded runs, stay as they were).
+LABEL LEAVE-ENTRY
+  340O # MTPS,  RP RP0 # MOV,  S S0 # MOV,  0 # MTPS,
+  IP HERE 6 + # MOV,  NEXT,  ' (LIT) ,  ' FLUSH ,  ' CATCH ,  ' DROP ,  ' (BYE) ,
+  END-CODE

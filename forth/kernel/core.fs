@@ -12,6 +12,7 @@ BUFFERS CONSTANT BUFFERS  ( -- a ) \ block buffer area (disk.fs)
 BUFFERS-SIZE CONSTANT BUFFERS-SIZE  ( -- n )
 TIB0 CONSTANT TIB  ( -- a )  \ CORE EXT
 RXLOST CONSTANT RXLOST  ( -- a ) \ console characters lost to a full ring
+RXDROP CONSTANT RXDROP  ( -- a ) \ typed-ahead characters ^C dropped
 VARIABLE STATE  ( -- a ) \ CORE: true while compiling
 10 VAR BASE  ( -- a )  \ CORE
 VARIABLE DP  ( -- a ) \ HERE; set by the metacompiler
@@ -78,10 +79,11 @@ VARIABLE ERR-IN  ( -- a ) \ >IN then
   RP@ 12 + RP!  0 ;  \ drop the saved SP and the saved source
 : THROW  ( k*x code -- k*x | i*x code )  \ EXCEPTION
   ?DUP IF
-    DUP -256 = IF DISARM 0 PRIORITY! THEN  \ a trap arrives at priority 7
+    DUP -256 = IF DISARM 0 PRIORITY! TRAP-CODE THEN  \ a trap arrives at priority 7
     BLK @ ERR-BLK !  >IN @ ERR-IN !
-    HANDLER @ 0= IF RP0 RP! ABORT-TO-QUIT THEN  \ no CATCH frame: nothing on the
-    \ return stack is needed, however broken it is
+    HANDLER @ RP@ RP0 WITHIN 0= IF 0 HANDLER ! THEN  \ a frame below RP is stale
+    HANDLER @ 0= IF RP0 RP! ABORT-TO-QUIT THEN  \ (: X R> DROP ; ' X CATCH left
+    \ it); no CATCH frame: nothing on the return stack is needed, however broken
     HANDLER @ RP!  R> HANDLER !  R> SWAP >R SP! DROP R>
     R> SRC-ID !  R> BLK !  R> >IN !  R> R> SRC 2! THEN ;
 VARIABLE ABORT-MSG  ( -- a ) \ counted message of the last ABORT"
@@ -94,7 +96,10 @@ VARIABLE ABORT-MSG  ( -- a ) \ counted message of the last ABORT"
 : UNUSED  ( -- n )  DICT-END @ HERE - 160 - ;  \ CORE EXT
 : ALLOT  ( n -- )  \ CORE: n signed; nothing allotted on an error
   DUP 0< IF DUP NEGATE HERE FENCE @ - U> IF -9 THROW THEN  \ never below the kernel
-  ELSE DUP UNUSED U> IF -8 THROW THEN THEN  DP +! ;
+    DP +!  HERE LAST @ NAME> 4 + U< IF  \ into the newest header: that word and
+      LAST @ 2- HERE 2DUP U< IF SWAP THEN DROP (FORGET)  \ any above HERE are
+    THEN EXIT                                           \ forgotten, as by FORGET
+  THEN  DUP UNUSED U> IF -8 THROW THEN  DP +! ;
 : ,  ( x -- )  HERE 2 ALLOT ! ;  \ CORE
 : C,  ( c -- )  HERE 1 ALLOT C! ;  \ CORE
 : ALIGN  ( -- )  HERE 1 AND ALLOT ;  \ CORE

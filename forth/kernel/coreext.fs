@@ -66,5 +66,4 @@ CODE 2R@  ( -- x1 x2 ) ( R: x1 x2 -- x1 x2 )  \ CORE EXT
   AGAIN ;
 : S\"  ( "ccc<quote>" -- a u )  \ CORE EXT, FILE EXT
   STATE @ IF ['] (S") ,  HERE 1+ ESC-PARSE DUP C, ALLOT ALIGN EXIT THEN
-  NEXT-SBUF >R  \ as S": one of its buffers
-  HERE DUP ESC-PARSE 128 MIN R@ SWAP DUP >R CMOVE 2R> ;  IMMEDIATE
+  HERE DUP ESC-PARSE SBUF-COPY ;  IMMEDIATE  \ as S": one of its buffers

@@ -96,9 +96,37 @@ CREATE BUF-BLK  ( -- a ) -1 , -1 , -1 , -1 ,  \ block in each buffer, -1 = none
 CREATE BUF-UPD  ( -- a )  0 ,  0 ,  0 ,  0 ,  \ true when the buffer was UPDATEd
 CREATE BUF-MRU  ( -- a )  0 ,  1 ,  2 ,  3 ,  \ buffer numbers, most recent first
 CREATE CUR-BLK  ( -- a ) -1 ,   \ the block UPDATE marks, -1 = none
+CREATE BUF-SUM  ( -- a )  0 ,  0 ,  0 ,  0 ,  \ an UPDATEd buffer's checksum (SEAL)
 : BUF-ADDR ( i -- addr ) B/BUF * BUFFERS + ;
 : >BLK ( i -- addr ) 2* BUF-BLK + ;
 : >UPD ( i -- addr ) 2* BUF-UPD + ;
+
+\ ---- nothing the program did not write reaches the disk --------------------
+\ A program writes a buffer between BLOCK (or BUFFER) and the next BLOCK or
+\ BUFFER, and marks it with UPDATE. So an UPDATEd buffer's checksum (with its
+\ block number) is taken at UPDATE and again when the next BLOCK or BUFFER
+\ ends that window (SEAL): from then on only a wild store can change it. A
+\ trap (a run through data, a wild jump: the state the kernel can no longer
+\ vouch for) checks every UPDATEd buffer (CHECK-BUFFERS): one that changed is
+\ not written; its block keeps what the disk holds and the report says so. A
+\ change made after the last UPDATE and before the trap, with no BLOCK call in
+\ between, counts as a change too: UPDATE after writing, as is the custom.
+CODE CHECKSUM  ( a -- u )  \ of the 1024 bytes at a: Fletcher's two sums, 512 words
+  W S ) MOV,  T 512 # MOV,  R0 CLR,  R3 CLR,   \ R0 the sum, R3 the sum of sums
+  BEGIN,  R0 W )+ ADD,  R3 R0 ADD,  T DEC,  EQ UNTIL,
+  R0 SWAB,  R3 R0 XOR,  S ) R3 MOV,  NEXT,  END-CODE
+: >SUM ( i -- addr ) 2* BUF-SUM + ;
+: BUF-SUM@ ( i -- u ) DUP BUF-ADDR CHECKSUM SWAP >BLK @ XOR ;
+: SEAL ( i -- ) DUP BUF-SUM@ SWAP >SUM ! ;
+: SEAL-CURRENT ( -- ) \ the window on the current buffer ends: seal it if UPDATEd
+   CUR-BLK @ DUP 0< IF DROP EXIT THEN RESIDENT DUP 0< IF DROP EXIT THEN
+   DUP >UPD @ IF SEAL ELSE DROP THEN ;
+: CHECK-BUFFERS ( -- ) \ after a trap: an UPDATEd buffer that changed is set aside
+   #BUFS 0 DO I >UPD @ IF I BUF-SUM@ I >SUM @ <> IF
+      CR ." NOT SAVED: block " I >BLK @ U. ." (changed since its last UPDATE when the trap hit;"
+      ."  the disk keeps the block as it was)"
+      0 I >UPD !  -1 I >BLK !
+   THEN THEN LOOP ;
 : TOUCH ( i -- ) \ make buffer i the most recently used
    BUF-MRU BEGIN 2DUP @ <> WHILE 2 + REPEAT
    BEGIN DUP BUF-MRU <> WHILE DUP 2 - @ OVER ! 2 - REPEAT ! ;
@@ -109,17 +137,17 @@ CREATE CUR-BLK  ( -- a ) -1 ,   \ the block UPDATE marks, -1 = none
 : FREE-BUF ( -- i ) \ the least recently used buffer, written back, unassigned
    BUF-MRU #BUFS 1- 2* + @ DUP WRITE-BACK -1 OVER >BLK ! ;
 : BUFFER ( blk -- addr ) \ BLOCK: assign a buffer to blk, contents undefined
-   ?BLOCK# DUP RESIDENT DUP 0< IF DROP FREE-BUF THEN
+   SEAL-CURRENT ?BLOCK# DUP RESIDENT DUP 0< IF DROP FREE-BUF THEN
    OVER CUR-BLK ! TUCK >BLK ! DUP TOUCH BUF-ADDR ;
 : (BLOCK) ( blk -- addr ) \ BLOCK for SOURCE: leaves the current block alone
    ?BLOCK# BUF-MRU @ DUP >BLK @ 2 PICK = IF NIP BUF-ADDR EXIT THEN DROP
    DUP RESIDENT DUP 0< IF DROP FREE-BUF 2DUP BUF-ADDR SWAP RL-READ THEN
    TUCK >BLK ! DUP TOUCH BUF-ADDR ;   \ (the first line: the most recent, fast)
 : BLOCK ( blk -- addr ) \ BLOCK: the buffer holding blk, read if needed; UPDATE's block
-   DUP (BLOCK) SWAP CUR-BLK ! ;
+   SEAL-CURRENT DUP (BLOCK) SWAP CUR-BLK ! ;
 : UPDATE ( -- ) \ BLOCK: mark the block last given by BLOCK or BUFFER as changed
    CUR-BLK @ DUP 0< 0= IF RESIDENT THEN DUP 0< ABORT" UPDATE: no current block"
-   TRUE SWAP >UPD ! ;
+   TRUE OVER >UPD ! SEAL ;
 : SAVE-BUFFERS ( -- ) #BUFS 0 DO I WRITE-BACK LOOP ;  \ BLOCK
 : EMPTY-BUFFERS ( -- ) #BUFS 0 DO -1 I >BLK ! 0 I >UPD ! LOOP -1 CUR-BLK ! ;  \ BLOCK EXT
 : FLUSH ( -- ) SAVE-BUFFERS EMPTY-BUFFERS ;  \ BLOCK

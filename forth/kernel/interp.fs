@@ -20,8 +20,8 @@
 
 \ ---- numbers: Forth-2012 3.4.1.3 plus the project's trailing O ----------------
 \ 'c' a character; a prefix # $ % (decimal, hex, binary) for this number only;
-\ then an optional -, digits in BASE, and a trailing O (octal, in any base) or a
-\ trailing . (a double-cell number).
+\ then an optional -, digits in BASE, and a trailing O (octal, in a base up to
+\ 24: from 25 on O is a digit) or a trailing . (a double-cell number).
 : DIGIT?  ( c -- n true | false )
   UPC DUP [CHAR] 9 > IF DUP [CHAR] A < IF DROP FALSE EXIT THEN 7 - THEN
   [CHAR] 0 - DUP BASE @ U< IF TRUE ELSE DROP FALSE THEN ;
@@ -45,7 +45,7 @@ VARIABLE NUM-CELLS  ( -- a ) \ 1 or 2: the number being converted
   2DUP BASE @ >R
   DUP IF OVER C@ PREFIX-BASE ?DUP IF BASE ! 1 /STRING THEN THEN
   [CHAR] . LAST-CHAR? IF 2 ELSE 1 THEN NUM-CELLS !
-  [CHAR] O LAST-CHAR? IF 8 BASE ! THEN
+  BASE @ 25 < IF [CHAR] O LAST-CHAR? IF 8 BASE ! THEN THEN
   DUP IF OVER C@ [CHAR] - = ELSE FALSE THEN DUP >R IF 1 /STRING THEN
   DUP IF 0 0 2SWAP >NUMBER NIP ELSE 2DROP 0 0 1 THEN
   R> SWAP R> BASE !  ( a u lo hi neg rest )
@@ -54,8 +54,8 @@ VARIABLE NUM-CELLS  ( -- a ) \ 1 or 2: the number being converted
 
 \ ---- finding words: word lists and the search order ----------------------------
 \ A word list (wid) is the body of a VOCABULARY or the space WORDLIST allots:
-\ +0 .. +76 the newest LFA of each of its 32 chains (a name's chain: prims.fs
-\ CHAIN-OFFSET, its first character and length), +100 its VOC-LINK cell, +102
+\ +0 .. +16 (octal) the newest LFA of each of its 8 chains (a name's chain: prims.fs
+\ CHAIN-OFFSET, its first character and length), +20 its VOC-LINK cell, +22
 \ the vocabulary's name field (0 for a WORDLIST). The search order is CONTEXT's
 \ cells, CONTEXT @ searched first; a wid equal to the one before it is not
 \ searched again (FORTH FORTH at boot: FORTH-79's CONTEXT then FORTH, and a
@@ -161,13 +161,14 @@ VARIABLE UNLOOPS  ( -- a ) \ UNLOOPs compiled since the last EXIT
 : ,"  ( "ccc"" -- )  [CHAR] " PARSE S, ;
 : ."  ( "ccc"" -- )  ['] (.") , ," ;  IMMEDIATE COMPILE-ONLY  \ CORE
 : ABORT"  ( "ccc"" -- )  ['] (ABORT") , ," ;  IMMEDIATE COMPILE-ONLY  \ CORE, EXCEPTION EXT
-CREATE SBUFS 512 ALLOT  ( -- a ) \ S" while interpreting: four buffers in turn
-VARIABLE SBUF  ( -- a ) \ offset of the buffer used last
-: NEXT-SBUF  ( -- a )  SBUF @ 128 + 511 AND DUP SBUF ! SBUFS + ;  \ 128 bytes
+CREATE SBUFS 512 ALLOT  ( -- a ) \ S" while interpreting: a ring of strings
+VARIABLE SBUF  ( -- a ) \ offset of the next free byte in it
+: SBUF-COPY  ( a u -- a' u )  \ into the ring, from its start when it does not
+  DUP 256 > IF -18 THROW THEN  \ fit: the newest strings stay (two of 256, or more)
+  SBUF @ OVER + 512 > IF 0 SBUF ! THEN  SBUF @ SBUFS +  OVER ALIGNED SBUF +!
+  SWAP 2DUP 2>R CMOVE 2R> ;
 : S"  ( "text<quote>" -- a u )  \ CORE
-  STATE @ IF ['] (S") , ," EXIT THEN
-  NEXT-SBUF >R
-  [CHAR] " PARSE 128 MIN R@ SWAP DUP >R CMOVE 2R> ;  IMMEDIATE
+  STATE @ IF ['] (S") , ," EXIT THEN  [CHAR] " PARSE SBUF-COPY ;  IMMEDIATE
 : [CHAR]  ( "c" -- )  CHAR POSTPONE LITERAL ;  IMMEDIATE COMPILE-ONLY  \ CORE
 : [']  ( "name" -- )  TICK POSTPONE LITERAL ;  IMMEDIATE COMPILE-ONLY  \ CORE
 : [COMPILE]  ( "name" -- )  TICK , ;  IMMEDIATE COMPILE-ONLY  \ CORE EXT
@@ -175,8 +176,14 @@ VARIABLE SBUF  ( -- a ) \ offset of the buffer used last
 \ as a literal (block 1008: : Install.Int.Servo ... ' Interrupt.Servo 100O ! ...).
 \ Forth-94 programs use ['] there; TICK is the plain parsing word.
 : '  ( "name" -- xt )  TICK STATE @ IF POSTPONE LITERAL THEN ;  IMMEDIATE  \ CORE
+\ A postponed IMMEDIATE word runs in compile state wherever the word holding
+\ it runs (gforth's postpone.fs: : ps POSTPONE S" ;  : t [ ps XY" ] ; lays
+\ XY into t); a STATE it changed itself (POSTPONE [) is kept.
+: COMPILING  ( i*x xt -- j*x )
+  STATE @ >R  ]  (EXECUTE)  STATE @ IF R> STATE ! ELSE R> DROP THEN ;
 : POSTPONE  ( "name" -- )  \ CORE
-  PARSE-NAME ?NAME  DUP NAME> SWAP C@ 128 AND IF , ELSE POSTPONE LITERAL ['] COMPILE, , THEN ;
+  PARSE-NAME ?NAME  DUP NAME> SWAP C@ 128 AND
+  IF POSTPONE LITERAL ['] COMPILING , ELSE POSTPONE LITERAL ['] COMPILE, , THEN ;
   IMMEDIATE COMPILE-ONLY
 : RECURSE  ( -- )  \ CORE: 0 = the last definition was forgotten or cut short
   LAST-XT @ ?DUP 0= IF -14 THROW THEN , ;  IMMEDIATE COMPILE-ONLY

@@ -14,11 +14,22 @@
   154010O EQU TRAP-PC     \   PC it interrupted
   154012O EQU THROW-CELL  \   THROW's code address: CODE words raise errors through it
   154014O EQU TICKS       \   60 Hz ticks the kernel's clock handler counted (double)
+  154020O EQU XOFF-HELD   \   nonzero: XOFF sent to the terminal, XON not yet
+  154022O EQU RXDROP      \   typed-ahead characters ^C dropped from the ring
   154400O EQU RING        \ 154400-155377 console receive ring (511 characters)
      777O EQU RING-MASK
+     384  EQU XOFF-MARK   \ characters in the ring that make RXINT send XOFF
   155400O EQU TIB0        \ 155400-155777 terminal input buffer
      256  EQU TIB-SIZE
-  156000O EQU S-LIMIT     \ 156000-156757 data stack (grows down from S0)
-  156760O EQU S0          \ 156760-156777 slack below the return stack
-  157000O EQU R-LIMIT     \ 157000-157775 return stack = hardware stack
-  157776O EQU RP0         \ empty; the cell here holds RS-GUARD (an EXIT too many)
+  156000O EQU R-LIMIT     \ 156000-156675 return stack = hardware stack
+  156676O EQU RP0         \ empty; the cell here holds RS-GUARD (an EXIT too many)
+                          \ 156700-156777 a gap: what the interpreter pushes above
+                          \   a full data stack lands there, not on the return stack
+  157000O EQU S-LIMIT     \ 157000-157677 data stack (grows down from S0)
+  157700O EQU S0          \ 157700-157777 beyond the MMU's page length: a word that
+                          \   reads or writes below the empty data stack traps
+\ KDF11-A memory management, kernel mode, pages mapped one to one (boot.fs)
+  172300O EQU KIPDR       \ kernel page descriptor registers 0-7
+  172340O EQU KIPAR       \ kernel page address registers 0-7
+  177572O EQU MMR0        \ bit 0 enable; 14 page length error; 3:1 page
+     250O EQU MMU-VECTOR  \ memory management abort

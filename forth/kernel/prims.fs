@@ -6,29 +6,32 @@
 
 \ DOCOL also guards the return stack: a runaway recursion is error -5 before it
 \ can overwrite the data stack and the dictionary below it
-LABEL DOCOL  ( -- )
-  R-LIMIT 40 + # RP CMP,  LO IF,  RP R-LIMIT 200 + # MOV,  -5 THROW,  THEN,  NEXT,  END-CODE
+LABEL DOCOL  ( -- )  ?RPUSH,  NEXT,  END-CODE
 LABEL DOVAR  ( -- a )  S -) W MOV,  RP )+ TST,  NEXT,  END-CODE
 LABEL DOCON  ( -- x )  S -) W ) MOV,  RP )+ TST,  NEXT,  END-CODE
 \ DOES> code is JSR IP,@#DODOES: return stack = IP, old W; W = body
 LABEL DODOES  ( -- a )  S -) W MOV,  RP ) RP )+ MOV,  NEXT,  END-CODE
 
-CODE EXIT  ( -- ) ( R: ip -- )  IP RP )+ MOV,  NEXT,  END-CODE  COMPILE-ONLY  \ CORE
+\ EXIT checks where it returns to: a thread lies in the kernel or the dictionary
+\ space, so a cell a program left with >R (a loop index, a count, a negative
+\ number) is error -257 instead of a run through data: one unsigned comparison
+\ of IP - ORIGIN, 4 instructions more per EXIT (an odd IP inside that range
+\ reads the cells from the even address below, as the 11/23 does)
+CODE EXIT  ( -- ) ( R: ip -- )  \ CORE
+  IP RP )+ MOV,  R0 IP MOV,  R0 ORIGIN # SUB,  LIMIT ORIGIN - # R0 CMP,
+  HIS IF,  -257 THROW,  THEN,  NEXT,  END-CODE  COMPILE-ONLY
 CODE (LIT)  ( -- x )  S -) IP )+ MOV,  NEXT,  END-CODE
 CODE BRANCH  ( -- )  BRANCH,  END-CODE
 CODE ?BRANCH  ( f -- )  S )+ TST,  EQ IF,  BRANCH,  THEN,  IP )+ TST,  NEXT,  END-CODE
-\ EXECUTE checks what it jumps to: on an empty stack it would run a stale cell,
-\ and an odd xt would run from the even address below (the 11/23 has no
-\ odd-address trap)
-CODE EXECUTE  ( xt -- )  \ CORE
-  S0 # S CMP,  HIS IF,  -4 THROW,  THEN,  R0 S ) MOV,  ?ODD,  S 2 # ADD,  R0 ) JMP,
-  END-CODE
+\ (EXECUTE) runs an xt the kernel took from a header (the interpreter);
+\ EXECUTE, which checks that its xt is one, is in quit.fs
+CODE (EXECUTE)  ( xt -- )  R0 S )+ MOV,  R0 ) JMP,  END-CODE
 
 \ DO loops. Return stack: leave address, bias = 100000-limit, index+bias.
 \ Adding to index+bias overflows (V) exactly when the index crosses the
 \ boundary between limit-1 and limit, in either direction (Forth-94 +LOOP).
 CODE (DO)  ( limit start -- )
-  RP -) IP )+ MOV,  R0 100000O # MOV,  R0 2 S I) SUB,  RP -) R0 MOV,
+  ?RPUSH,  RP -) IP )+ MOV,  R0 100000O # MOV,  R0 2 S I) SUB,  RP -) R0 MOV,
   R0 S )+ ADD,  S )+ TST,  RP -) R0 MOV,  NEXT,  END-CODE
 CODE (?DO)  ( limit start -- )
   S ) 2 S I) CMP,  EQ IF,  S 4 # ADD,  IP IP ) MOV,  NEXT,  THEN,
@@ -64,12 +67,17 @@ CODE 2OVER  ( a b c d -- a b c d a b )  S -) 6 S I) MOV,  S -) 6 S I) MOV,  NEXT
 CODE PICK  ( xu .. x0 u -- xu .. x0 xu )  \ CORE EXT: u beyond the stack: error -4
   T S0 2 - # MOV,  T S SUB,  T ASR,  T S ) CMP,  HIS IF,  -4 THROW,  THEN,
   R0 S ) MOV,  R0 R0 ADD,  R0 S ADD,  S ) 2 R0 I) MOV,  NEXT,  END-CODE
-CODE >R  ( x -- ) ( R: -- x )  RP -) S )+ MOV,  NEXT,  END-CODE  COMPILE-ONLY  \ CORE
-CODE R>  ( -- x ) ( R: x -- )  S -) RP )+ MOV,  NEXT,  END-CODE  COMPILE-ONLY  \ CORE
+\ >R 2>R (DO) check the return stack's depth as DOCOL does (2 instructions);
+\ R> 2R> refuse to pop RP0's guard cell (the return stack is empty), and pop
+\ only after the push: a push beyond S0 is aborted by the MMU, whose trap
+\ frame would otherwise land on the cell just popped (a CATCH frame's)
+CODE >R  ( x -- ) ( R: -- x )  ?RPUSH,  RP -) S )+ MOV,  NEXT,  END-CODE  COMPILE-ONLY  \ CORE
+CODE R>  ( -- x ) ( R: x -- )  \ CORE
+  RP0 # RP CMP,  HIS IF,  -6 THROW,  THEN,  S -) RP ) MOV,  RP )+ TST,  NEXT,  END-CODE  COMPILE-ONLY
 CODE R@  ( -- x ) ( R: x -- x )  S -) RP ) MOV,  NEXT,  END-CODE  COMPILE-ONLY  \ CORE
-CODE 2>R  ( a b -- ) ( R: -- a b )  RP -) 2 S I) MOV,  RP -) S ) MOV,  S 4 # ADD,  NEXT,  \ CORE EXT
+CODE 2>R  ( a b -- ) ( R: -- a b )  ?RPUSH,  RP -) 2 S I) MOV,  RP -) S ) MOV,  S 4 # ADD,  NEXT,  \ CORE EXT
   END-CODE  COMPILE-ONLY
-CODE 2R>  ( -- a b ) ( R: a b -- )  S -) 2 RP I) MOV,  S -) RP ) MOV,  RP 4 # ADD,  NEXT,  \ CORE EXT
+CODE 2R>  ( -- a b ) ( R: a b -- )  RP0 2 - # RP CMP,  HIS IF,  -6 THROW,  THEN,  S -) 2 RP I) MOV,  S -) RP ) MOV,  RP 4 # ADD,  NEXT,  \ CORE EXT
   END-CODE  COMPILE-ONLY
 CODE SP@  ( -- a )  R0 S MOV,  S -) R0 MOV,  NEXT,  END-CODE
 \ SP! and RP! refuse a pointer outside their stack (error -9), which would
@@ -94,10 +102,14 @@ CODE 2+  ( n -- n+2 )  S ) 2 # ADD,  NEXT,  END-CODE
 CODE 2-  ( n -- n-2 )  S ) 2 # SUB,  NEXT,  END-CODE
 CODE 2*  ( x -- x*2 )  S ) ASL,  NEXT,  END-CODE  \ CORE
 CODE 2/  ( x -- x/2 )  S ) ASR,  NEXT,  END-CODE  \ CORE
+\ a count of 16 or more shifts every bit out (as gforth): 0 at once, not a
+\ loop of up to 65535 steps for -1 LSHIFT
 CODE LSHIFT  ( x u -- x' )  \ CORE
-  R0 S )+ MOV,  NE IF,  BEGIN,  S ) ASL,  R0 DEC,  EQ UNTIL,  THEN,  NEXT,  END-CODE
+  R0 S )+ MOV,  16 # R0 CMP,  HIS IF,  S ) CLR,  NEXT,  THEN,
+  R0 TST,  NE IF,  BEGIN,  S ) ASL,  R0 DEC,  EQ UNTIL,  THEN,  NEXT,  END-CODE
 CODE RSHIFT  ( x u -- x' )  \ CORE
-  R0 S )+ MOV,  NE IF,  BEGIN,  CLC,  S ) ROR,  R0 DEC,  EQ UNTIL,  THEN,  NEXT,  END-CODE
+  R0 S )+ MOV,  16 # R0 CMP,  HIS IF,  S ) CLR,  NEXT,  THEN,
+  R0 TST,  NE IF,  BEGIN,  CLC,  S ) ROR,  R0 DEC,  EQ UNTIL,  THEN,  NEXT,  END-CODE
 CODE =  ( a b -- f )  EQ BINCMP,  END-CODE  \ CORE
 CODE <>  ( a b -- f )  NE BINCMP,  END-CODE  \ CORE EXT
 CODE <  ( a b -- f )  LT BINCMP,  END-CODE  \ CORE
@@ -147,22 +159,43 @@ CODE DNEGATE  ( d -- -d )  S ) NEG,  2 S I) NEG,  S ) SBC,  NEXT,  END-CODE  \ D
 
 \ memory
 CODE @  ( a -- x )  R0 S ) MOV,  ?ODD,  S ) R0 ) MOV,  NEXT,  END-CODE  \ CORE
-CODE !  ( x a -- )  R0 S ) MOV,  ?ODD,  S 2 # ADD,  R0 ) S )+ MOV,  NEXT,  END-CODE  \ CORE
+\ STORE-CHECK (R0 below 2000) and RANGE-CHECK (W start, T length, not 0; uses
+\ R3), by JSR PC from ?STORE, ?STORE-RANGE,: error -259 for the vectors and
+\ stubs the kernel lives by: 0-77 (traps, console), 250-253 (the MMU abort),
+\ the stubs 1000-1777; 100 up are a program's to set (block 1008: 100)
+LABEL STORE-CHECK
+  100O # R0 CMP,  LO IF,  -259 THROW,  THEN,
+  1000O # R0 CMP,  HIS IF,  -259 THROW,  THEN,
+  R3 R0 MOV,  R3 3 # BIC,  250O # R3 CMP,  EQ IF,  -259 THROW,  THEN,
+  PC RTS,  END-CODE
+LABEL RANGE-CHECK
+  R3 W MOV,  R3 T ADD,  CS IF,  R3 TST,  NE IF,  -259 THROW,  THEN,  THEN,
+  2000O # W CMP,  LO IF,
+    100O # W CMP,  LO IF,  -259 THROW,  THEN,
+    254O # W CMP,
+    HIS IF,  1000O # R3 CMP,  HI IF,  -259 THROW,  THEN,
+    ELSE,  250O # R3 CMP,  HI IF,  -259 THROW,  THEN,
+    THEN,
+  THEN,
+  PC RTS,  END-CODE
+\ stores refuse the kernel's own vectors and stubs (?STORE,: 2 instructions
+\ for an address at or above 2000); FILL CMOVE CMOVE> check their range
+CODE !  ( x a -- )  R0 S ) MOV,  ?ODD,  ?STORE,  S 2 # ADD,  R0 ) S )+ MOV,  NEXT,  END-CODE  \ CORE
 CODE C@  ( a -- c )  R0 S ) MOV,  S ) CLR,  S ) R0 ) MOVB,  NEXT,  END-CODE  \ CORE
-CODE C!  ( c a -- )  R0 S )+ MOV,  T S )+ MOV,  R0 ) T MOVB,  NEXT,  END-CODE  \ CORE
-CODE +!  ( n a -- )  R0 S ) MOV,  ?ODD,  S 2 # ADD,  R0 ) S )+ ADD,  NEXT,  END-CODE  \ CORE
+CODE C!  ( c a -- )  R0 S )+ MOV,  ?STORE,  T S )+ MOV,  R0 ) T MOVB,  NEXT,  END-CODE  \ CORE
+CODE +!  ( n a -- )  R0 S ) MOV,  ?ODD,  ?STORE,  S 2 # ADD,  R0 ) S )+ ADD,  NEXT,  END-CODE  \ CORE
 CODE 2@  ( a -- x1 x2 )  R0 S ) MOV,  ?ODD,  S ) 2 R0 I) MOV,  S -) R0 ) MOV,  NEXT,  END-CODE  \ CORE
-CODE 2!  ( x1 x2 a -- )  R0 S ) MOV,  ?ODD,  S 2 # ADD,  R0 )+ S )+ MOV,  R0 ) S )+ MOV,  NEXT,  END-CODE  \ CORE
-CODE 1SET  ( a -- )  R0 S )+ MOV,  R0 ) 1 # MOV,  NEXT,  END-CODE
+CODE 2!  ( x1 x2 a -- )  R0 S ) MOV,  ?ODD,  ?STORE,  R0 2 # ADD,  ?STORE,  R0 S ) MOV,  S 2 # ADD,  R0 )+ S )+ MOV,  R0 ) S )+ MOV,  NEXT,  END-CODE  \ CORE
+CODE 1SET  ( a -- )  R0 S )+ MOV,  ?STORE,  R0 ) 1 # MOV,  NEXT,  END-CODE
 CODE CMOVE  ( src dst n -- )  \ STRING
-  T S )+ MOV,  W S )+ MOV,  R0 S )+ MOV,
+  T S ) MOV,  W 2 S I) MOV,  ?STORE-RANGE,  T S )+ MOV,  W S )+ MOV,  R0 S )+ MOV,
   T TST,  NE IF,  BEGIN,  W )+ R0 )+ MOVB,  T DEC,  EQ UNTIL,  THEN,  NEXT,  END-CODE
 CODE CMOVE>  ( src dst n -- )  \ STRING
-  T S )+ MOV,  W S )+ MOV,  R0 S )+ MOV,  W T ADD,  R0 T ADD,
+  T S ) MOV,  W 2 S I) MOV,  ?STORE-RANGE,  T S )+ MOV,  W S )+ MOV,  R0 S )+ MOV,  W T ADD,  R0 T ADD,
   T TST,  NE IF,  R3 T MOV,  BEGIN,  W -) R0 -) MOVB,  R3 DEC,  EQ UNTIL,  THEN,
   NEXT,  END-CODE
 CODE FILL  ( a n c -- )  \ CORE
-  R0 S )+ MOV,  T S )+ MOV,  W S )+ MOV,
+  T 2 S I) MOV,  W 4 S I) MOV,  ?STORE-RANGE,  R0 S )+ MOV,  T S )+ MOV,  W S )+ MOV,
   T TST,  NE IF,  BEGIN,  W )+ R0 MOVB,  T DEC,  EQ UNTIL,  THEN,  NEXT,  END-CODE
 
 \ parsing helpers: with a blank delimiter any control character is a blank
@@ -172,8 +205,8 @@ CODE SKIP  ( a u c -- a' u' )  \ first character not c, or the end
   NE SCAN-LOOP,  END-CODE
 
 \ The dictionary search's two halves (CODE words WID-FIND SEARCH-ORDER CHAIN in
-\ interp.fs). A word list has 32 chains; a name's chain is its upper-cased first
-\ character plus twice its length, mod 32 (the metacompiler's theader hashes alike).
+\ interp.fs). A word list has 8 chains; a name's chain is its upper-cased first
+\ character plus twice its length, mod 8 (the metacompiler's theader hashes alike).
 \ CHAIN-OFFSET (JSR PC): R0 := the byte offset of that chain in a word list, for
 \ the name at 2(S), length (S) (at least 1)
 LABEL CHAIN-OFFSET
@@ -208,10 +241,20 @@ LABEL WALK
   THEN,
   PC RTS,  END-CODE
 
-\ console (DL11 at 177560): receive by interrupt into a ring of 511 characters;
-\ when the ring is full further characters are dropped and counted (RXLOST)
-\ ^C is not queued: it interrupts whatever runs (a runaway loop) with error -28
+\ console (DL11 at 177560): receive by interrupt into a ring of 511 characters.
+\ Flow control as a DL11 and a paper-tape reader did it (docs/console.md, "A
+\ paste"): RXINT sends XOFF (DC3) when the ring holds XOFF-MARK characters, KEY
+\ sends XON (DC1) when it finds the ring empty; the terminal side stops
+\ delivering meanwhile (pdp11-devices/console_pacing.c). A ring that is full all
+\ the same drops further characters and counts them (RXLOST): the guard.
+\ ^C is not queued: it empties the ring (counted in RXDROP, reported by .LOST)
+\ and interrupts whatever runs (a runaway loop) with error -28
 
+\ SEND-CONTROL (JSR PC; the character in T): wait for the transmitter, send, and
+\ wait until it is done, so an EMIT this interrupted finds it free again.
+LABEL SEND-CONTROL
+  BEGIN,  177564O @# 200O # BIT,  NE UNTIL,  177566O @# T MOV,
+  BEGIN,  177564O @# 200O # BIT,  NE UNTIL,  PC RTS,  END-CODE
 \ KEY's idle step (JSR PC): with the ring empty, WAIT for the next interrupt, so
 \ the host can idle (SET CPU IDLE, pdp11-devices/bus/kw11l.c); time still passes
 \ by the instruction count. Its layout is fixed: CMP at +0, BNE at +6, WAIT at
@@ -223,10 +266,18 @@ LABEL KEY-IDLE
 LABEL RXINT
   RP -) R0 MOV,  RP -) T MOV,  RP -) W MOV,
   R0 177562O @# MOV,  R0 177600O # BIC,
-  3 # R0 CMP,  EQ IF,  0 # MTPS,  S S0 # MOV,  S -) CLR,  -28 THROW,  THEN,
+  3 # R0 CMP,  EQ IF,
+    T RXHEAD @# MOV,  T RXTAIL @# SUB,  T RING-MASK INVERT # BIC,  RXDROP @# T ADD,
+    RXTAIL @# RXHEAD @# MOV,
+    XOFF-HELD @# TST,  NE IF,  XOFF-HELD @# CLR,  T 17 # MOV,  SEND-CONTROL @# PC JSR,  THEN,
+    0 # MTPS,  S S0 # MOV,  S -) CLR,  -28 THROW,  THEN,
   W RXHEAD @# MOV,  T W MOV,  T INC,  T RING-MASK INVERT # BIC,
   T RXTAIL @# CMP,
-  EQ IF,  RXLOST @# INC,  ELSE,  RING W I) R0 MOVB,  RXHEAD @# T MOV,  THEN,
+  EQ IF,  RXLOST @# INC,  ELSE,  RING W I) R0 MOVB,  RXHEAD @# T MOV,
+    T RXTAIL @# SUB,  T RING-MASK INVERT # BIC,  XOFF-MARK # T CMP,
+    HIS IF,  XOFF-HELD @# TST,  EQ IF,
+      XOFF-HELD @# INC,  T 19 # MOV,  SEND-CONTROL @# PC JSR,  THEN,  THEN,
+  THEN,
   R0 6 RP I) MOV,  R0 KEY-IDLE 6 + # SUB,  2 # R0 CMP,
   LOS IF,  6 RP I) KEY-IDLE 10 + # MOV,  THEN,
   W RP )+ MOV,  T RP )+ MOV,  R0 RP )+ MOV,  RTI,  END-CODE
@@ -237,6 +288,7 @@ CODE KEY?  ( -- f )  \ FACILITY
 \ as the interrupt would (PS and PC pushed), so the console never goes deaf.
 CODE KEY  ( -- c )  \ CORE
   BEGIN,  RXTAIL @# RXHEAD @# CMP,  EQ WHILE,
+    XOFF-HELD @# TST,  NE IF,  XOFF-HELD @# CLR,  T 17 # MOV,  SEND-CONTROL @# PC JSR,  THEN,
     R0 MFPS,  R0 177400O # BIC,  R0 200O # BIT,      \ MFPS extends the sign: PS is 8 bits
     EQ IF,  KEY-IDLE @# PC JSR,
     ELSE,  177560O @# 200O # BIT,  NE IF,  RP -) R0 MOV,  RXINT @# PC JSR,  THEN,

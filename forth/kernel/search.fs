@@ -33,15 +33,15 @@ ENVIRONMENT DEFINITIONS
 255 CONSTANT /COUNTED-STRING  ( -- n ) \ longest counted string
 68 CONSTANT /HOLD  ( -- n ) \ pictured numeric output buffer, characters
 92 CONSTANT /PAD  ( -- n ) \ PAD's size
-16 CONSTANT ADDRESS-UNIT-BITS  ( -- n )
+8 CONSTANT ADDRESS-UNIT-BITS  ( -- n ) \ bits in an address unit: a byte (cells are 16)
 0 CONSTANT FLOORED  ( -- f ) \ / MOD */ round towards zero (SM/REM)
 255 CONSTANT MAX-CHAR  ( -- u )
 32767 CONSTANT MAX-N  ( -- n )
 -1 CONSTANT MAX-U  ( -- u )
 : MAX-D  ( -- d )  -1 32767 ;
 : MAX-UD  ( -- ud )  -1 -1 ;
-240 CONSTANT STACK-CELLS  ( -- n ) \ data stack, up to the overflow check
-240 CONSTANT RETURN-STACK-CELLS  ( -- n ) \ return stack, down to DOCOL's check
+216 CONSTANT STACK-CELLS  ( -- n ) \ data stack, up to the overflow check
+203 CONSTANT RETURN-STACK-CELLS  ( -- n ) \ return stack, down to DOCOL's and >R's check
 8 CONSTANT WORDLISTS  ( -- n ) \ SEARCH: word lists in the search order
 16 CONSTANT #LOCALS  ( -- n ) \ LOCALS: locals in one definition
 FORTH DEFINITIONS

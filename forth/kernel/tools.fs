@@ -3,10 +3,11 @@
 : .S  ( -- )  \ TOOLS: the stack, deepest first
   ." <" DEPTH 0 .R ." > "  DEPTH DUP 0 ?DO DUP I - PICK . LOOP DROP ;
 VARIABLE COLUMN  ( -- a )
-CREATE CURSORS CHAIN-BYTES ALLOT  ( -- a ) \ WORDS' place in each chain
+\ WORDS keeps its place in each chain at HERE (scratch, as WORD's buffer):
+\ the bytes a cursor array in the dictionary would take stay free
 : WORDS  ( -- )  \ TOOLS: the CONTEXT vocabulary, newest first (its chains merged)
-  0 COLUMN !  CONTEXT @ CURSORS CHAIN-BYTES CMOVE
-  BEGIN CURSORS NEWEST-SLOT ?DUP WHILE
+  0 COLUMN !  CONTEXT @ HERE CHAIN-BYTES CMOVE
+  BEGIN HERE NEWEST-SLOT ?DUP WHILE
     DUP @ DUP 2+ C@ 32 AND 0= IF
       COLUMN @ 64 > IF CR 0 COLUMN ! THEN
       DUP 2+ DUP .NAME SPACE C@ 31 AND 1+ COLUMN +!
@@ -53,10 +54,10 @@ CREATE CURSORS CHAIN-BYTES ALLOT  ( -- a ) \ WORDS' place in each chain
     DUP @ 2 PICK U< 0= IF DUP @ @ OVER ! ELSE 2DUP @ LINK>WID TRIM @ THEN
   REPEAT 2DROP ;
 : RESTORE-VECTORS  ( lfa -- )  \ no vector may point into forgotten code
-  1000O 0 DO
-    I @ OVER HERE WITHIN IF
+  1000O 100O DO  \ those below 100 and 250 are the kernel's: ! refuses them
+    I 250O <> IF I @ STUBS I + <> IF I @ OVER HERE WITHIN IF
       STUBS I + I !  ." vector " I .OCTAL ."  restored to its default handler" CR
-    THEN
+    THEN THEN THEN
   4 +LOOP DROP ;
 : (FORGET)  ( lfa -- )  \ remove every word from lfa up
   DUP FENCE @ U< IF -15 THROW THEN

@@ -56,7 +56,11 @@ write-heads
     i $30 = if $5F [lbl] STUBS i + t!  [lbl] RXINT [lbl] STUBS i + 2 + t! else
     i $40 = if $5F [lbl] STUBS i + t!  [lbl] TICK [lbl] STUBS i + 2 + t! else
       $081F [lbl] STUBS i + t!  [lbl] TRAPPED [lbl] STUBS i + 2 + t! then then
-  4 +loop ;
+  4 +loop
+  \ 000040, a reserved instruction, fills the free dictionary space (boot.fs);
+  \ vector 40 (no device uses it) holds another, 000010, so free space both
+  \ jumped into and run as a thread (an xt of 40) traps
+  $8 $20 t! ;
 fill-vectors
 0 there lbl ENTRY s" build/kernel.lda" write-lda
 s" build/kernel.map" write-map

@@ -23,10 +23,11 @@
     BLANKCHAR,  R3 R0 CMP,  r> IF,  2 S I) W MOV,  S ) T MOV,  NEXT,  THEN,
     W INC,  T DEC,
   AGAIN, ;
-\ raise FORTH error n from a CODE word: replace the top of stack with n and
+\ raise FORTH error n from a CODE word: push n (a push, not a replacement of
+\ the top: on an empty stack the top is beyond the MMU's fence at S0) and
 \ continue in the thread cell holding THROW's code address
 : THROW, ( n -- )
-  >r S ) r> # MOV,  IP s" THROW-CELL" label-value # MOV,  NEXT, ;
+  >r S -) r> # MOV,  IP s" THROW-CELL" label-value # MOV,  NEXT, ;
 \ a word access at an odd address: the 11/23 (F-11) would silently use the even
 \ address below, so @ ! and friends check and report error -23 themselves
 : ?ODD, ( -- )  R0 1 # BIT,  NE IF,  -23 THROW,  THEN, ;
@@ -37,6 +38,19 @@
 \ (error -3) before the data stack runs over the buffers and the dictionary
 : BRANCH, ( -- )
   s" S-LIMIT" label-value # S CMP,
-  LO IF,  S s" S0" label-value # MOV,  S -) CLR,  -3 THROW,  THEN,
+  LO IF,  S s" S0" label-value # MOV,  -3 THROW,  THEN,
   IP IP ) MOV,  NEXT, ;
+\ a push of n cells on the return stack would pass DOCOL's margin: error -5,
+\ with the return stack put back inside its area for THROW's own calls
+: ?RPUSH, ( -- )
+  s" R-LIMIT" label-value 40 + # RP CMP,
+  LO IF,  RP s" R-LIMIT" label-value 200 + # MOV,  -5 THROW,  THEN, ;
+\ the vectors and stubs the kernel lives by: 0-77 (traps, console), 250-253
+\ (the MMU abort) and the stubs 1000-1777; 100 up are a program's to set
+\ The checks themselves are out of line (prims.fs: STORE-CHECK and
+\ RANGE-CHECK, reached by JSR PC), so the stores pay 2 instructions inline
+: ?STORE, ( -- )  \ R0 = the address of a word or byte store
+  $400 # R0 CMP,  LO IF,  s" STORE-CHECK" label-value @# PC JSR,  THEN, ;
+: ?STORE-RANGE, ( -- )  \ W = the first address, T = the length; uses R3
+  T TST,  NE IF,  s" RANGE-CHECK" label-value @# PC JSR,  THEN, ;
 asm>

@@ -14,6 +14,7 @@ import tempfile
 import time
 
 from harness.analysis import servo_timing
+from harness.bench.protection_cost import cost
 from harness.machine.build import RATE, fresh_disk
 from harness.machine.robot import Robot
 
@@ -24,9 +25,11 @@ def load_time(disk):
         t0, s0 = time.perf_counter(), r.time()
         r.send("1000 LOAD")
         host = time.perf_counter() - t0
+        instructions = round((r.time() - s0) * RATE)
         print(f"  1000 LOAD: {r.time() - s0:.2f} s simulated 11/23 time "
-              f"({(r.time() - s0) * RATE:,.0f} instructions at {RATE:,}/s), "
+              f"({instructions:,} instructions at {RATE:,}/s), "
               f"{1000 * host:.0f} ms host time")
+        print(cost("load", instructions))
 
 
 def main():
@@ -36,6 +39,9 @@ def main():
         if "-v" in sys.argv:
             print(report.format("Interrupt.Servo"))
         print(servo_timing.summary(label, report))
+        print(cost("servo idle" if "idle" in label else "servo move",
+                   round(report.total_instructions / max(report.count, 1), 1),
+                   "instructions per tick"))
     with tempfile.TemporaryDirectory() as tmp:
         disk = fresh_disk(tmp, "load.dsk")
         load_time(disk)

@@ -10,6 +10,7 @@ is what the editor expects to insert into (zero bytes would be control character
 Every write goes to a temporary file in the destination's directory that is renamed
 into place only when complete, so a failure never leaves a half-written file.
 """
+import fcntl
 import os
 import re
 import stat
@@ -143,6 +144,36 @@ def check_image(path, writable=True):
         if st.st_mode & 0o222 == 0:
             raise DiskError(f"{path}: {locked} (no write permission)")
         _check_opens(path, "r+b", locked)
+
+
+def writer_of(path):
+    """Who writes the image: a simulator holds an exclusive flock(2) on it while an RL
+    unit has it attached read-write (pdp11-devices/simh/rl_one_writer.c). The text of
+    PATH.lock ("pid N since DATE UTC") when one does, else None."""
+    try:
+        fd = os.open(path, os.O_RDONLY)
+    except OSError:
+        return None                          # check_image says why
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except BlockingIOError:
+        try:
+            return Path(f"{path}.lock").read_text().strip() or "another process"
+        except OSError:
+            return "another process"
+    except OSError:
+        return None                          # a file system without locks
+    finally:
+        os.close(fd)                         # our own test lock goes with it
+    return None
+
+
+def check_not_held(path, why="one simulator writes an image at a time: leave that "
+                   "one first, or --read-only"):
+    """DiskError (one line, naming the holder) when a simulator writes `path`."""
+    holder = writer_of(path)
+    if holder:
+        raise DiskError(f"{path}: in use by {holder} ({why})")
 
 
 def _check_opens(path, mode, what):

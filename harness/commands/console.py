@@ -3,7 +3,7 @@ import argparse
 import shutil
 from pathlib import Path
 
-from harness.blocks.disk import DiskError, check_image
+from harness.blocks.disk import DiskError, check_image, check_not_held
 from harness.commands.argtypes import positive
 from harness.machine.console_session import BUSY_WAIT, HINT, RACK_HINT, session
 from harness.machine.build import (PDP11, PDP11_TIMED, PRISTINE_DISK as PRISTINE,
@@ -28,7 +28,10 @@ REALTIME) unless --fast: then at full speed while the FORTH works, and at the
 {RACK_HINT}
 
 The disk is the working copy local/robot.dsk (created from build/robot.dsk when
-missing; make never overwrites it), or --disk IMAGE."""
+missing; make never overwrites it), or --disk IMAGE. One simulator writes an
+image at a time: while another (make lab, a second make run) has it, the
+console says who and exits 1; --read-only attaches it beside that one, to look
+(FLUSH then fails and says so; nothing is written)."""
 
 
 def configure(parser):
@@ -39,6 +42,8 @@ def configure(parser):
     parser.add_argument("--fast", action="store_true",
                         help="full speed instead of the 11/23's real-time pace")
     parser.add_argument("--trace", metavar="FILE", help="record the plant trace (CSV)")
+    parser.add_argument("--read-only", action="store_true",
+                        help="attach the disk read-only (beside a simulator writing it)")
     parser.add_argument("--timed", action="store_true",
                         help="11/23 time: each instruction takes its KDF11-A time (SET CLK "
                         "TIMED, on build/pdp11-timed) instead of 1/300000 s")
@@ -49,12 +54,13 @@ def configure(parser):
     parser.set_defaults(run=run)
 
 
-def working_disk(requested):
+def working_disk(requested, read_only=False):
     """The image to attach, checked (harness.blocks.disk.check_image: the console changes
-    it, so it must be writable); the default working copy is made when missing."""
+    it, so it must be writable and no other simulator may be writing it, unless
+    read_only); the default working copy is made when missing."""
     if requested:
         disk = Path(requested)
-        check_image(disk)
+        _check(disk, read_only)
         return disk
     if not WORK_DISK.is_file():
         if not PRISTINE.is_file():
@@ -64,16 +70,22 @@ def working_disk(requested):
         shutil.copyfile(PRISTINE, tmp)
         tmp.replace(WORK_DISK)
         print(f"[console] working disk {WORK_DISK} created from {PRISTINE}")
-    check_image(WORK_DISK)
+    _check(WORK_DISK, read_only)
     return WORK_DISK
 
 
+def _check(disk, read_only):
+    check_image(disk, writable=not read_only)
+    if not read_only:
+        check_not_held(disk)
+
+
 def run(args):
-    disk = working_disk(args.disk)
+    disk = working_disk(args.disk, args.read_only)
     args.simulator = args.simulator or str(PDP11_TIMED if args.timed else PDP11)
     if not Path(args.simulator).is_file():
         raise ConsoleError(f"{args.simulator}: no simulator (run make)")
     if args.trace and not Path(args.trace).resolve().parent.is_dir():
         raise ConsoleError(f"{args.trace}: its directory does not exist")
     return session(args.simulator, disk, trace=args.trace, fast=args.fast, timed=args.timed,
-                   busy_wait=args.busy_wait)
+                   busy_wait=args.busy_wait, read_only=args.read_only)

@@ -18,7 +18,9 @@ The lab bench: the FORTH console, the robot, a scope and the servo in a browser 
 Boots the FORTH on the working disk (local/robot.dsk, as make run) and serves
 the page on 127.0.0.1 only; open the URL it prints (it holds this session's
 token; the server opens no browser). Leave with BYE in the page's terminal (the
-FORTH FLUSHes its blocks, the disk is detached) or ^C here."""
+FORTH FLUSHes its blocks, the disk is detached) or ^C here. While another
+simulator writes the disk (make run), the lab says who and exits 1;
+--read-only attaches it beside that one."""
 
 
 def configure(parser):
@@ -30,6 +32,8 @@ def configure(parser):
                         help="port on 127.0.0.1 (default 8023; 0 = any free port)")
     parser.add_argument("--speed", choices=("real", "x10", "full"), default="real",
                         help="pace at start (default: the 11/23's real pace)")
+    parser.add_argument("--read-only", action="store_true",
+                        help="attach the disk read-only (beside a simulator writing it)")
     parser.add_argument("--simulator", default=str(PDP11), help=argparse.SUPPRESS)
     parser.set_defaults(run=run)
 
@@ -42,7 +46,7 @@ def announce(url):
 
 
 def run(args):
-    disk = working_disk(args.disk)
+    disk = working_disk(args.disk, args.read_only)
     if not Path(args.simulator).is_file():
         raise ConsoleError(f"{args.simulator}: no simulator (run make)")
     if not (NODE_MODULES / "@xterm" / "xterm").is_dir():
@@ -51,7 +55,7 @@ def run(args):
     symbols = read_kernel_map(KERNEL_MAP)
     try:
         safe = asyncio.run(serve(args.simulator, disk, symbols, args.port, args.speed,
-                                    announce))
+                                    announce, args.read_only))
     except OSError as err:
         raise ConsoleError(f"cannot serve on 127.0.0.1:{args.port}: {err.strerror}") from err
     if safe is None:

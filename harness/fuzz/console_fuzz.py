@@ -17,8 +17,10 @@ Set.Up.Robot and a move of x by +800 counts and y by -800, whose counters must
 end within TOLERANCE counts of that two seconds later (the printed servo hunts
 round its targets: docs/servo.md). The directions: with no servo running, x
 drifts onto its lower end stop and y onto its upper one within about three
-simulated minutes, and a long run takes more. Exit status 0 when all three
-counts are 0 and the move works, else 1.
+simulated minutes, and a long run takes more. Last, two simulators on one
+image (harness/fuzz/two_writers.py): --writer-rounds seeded rounds of a second
+simulator, read-write (refused) or read-only, beside the fuzz's machine. Exit
+status 0 when all three counts are 0, the move works and no round failed, else 1.
 """
 import argparse
 import collections
@@ -29,6 +31,7 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from harness.fuzz import two_writers
 from harness.fuzz.lines import EMPTIES_STACK, LineMaker
 from harness.machine.build import fresh_disk
 from harness.machine.scripted_machine import ScriptedMachine
@@ -42,6 +45,7 @@ TARGET = (800, -800)
 MOVE = ["1000 LOAD", "Set.Up.Robot", f"{TARGET[0]} {TARGET[1]} 0 0 Abs.Move"]
 COUNTERS = "0 Read.Counter . 1 Read.Counter ."
 TOLERANCE = 100
+WRITER_ROUNDS = 20         # second simulators tried beside the fuzz's machine
 
 
 @dataclass
@@ -54,6 +58,8 @@ class Report:
     reboots: list = field(default_factory=list)
     counters: tuple = ()
     move_failure: str = ""
+    writer_rounds: int = 0
+    two_writers: list = field(default_factory=list)     # failures, one line each
     seconds: float = 0.0
 
     @property
@@ -63,7 +69,8 @@ class Report:
 
     @property
     def passed(self):
-        return not (self.halts or self.hangs or self.reboots) and self.move_works
+        return not (self.halts or self.hangs or self.reboots or self.two_writers) \
+            and self.move_works
 
     def text(self):
         errors = sum(self.errors.values())
@@ -80,6 +87,9 @@ class Report:
                     f"counters read {' '.join(map(str, self.counters)) or 'nothing'}: "
                     f"{'the move works' if self.move_works else 'THE MOVE FAILED'}"
                     + (f" ({self.move_failure})" if self.move_failure else ""))
+        rows.append(f"  two simulators on one image: {self.writer_rounds} rounds, "
+                    f"{len(self.two_writers)} failed")
+        rows += [f"    {failure}" for failure in self.two_writers[:10]]
         return "\n".join(rows)
 
 
@@ -99,8 +109,8 @@ class Fuzzer:
         if self.machine:
             self.machine.close()
         self.boots += 1
-        disk = fresh_disk(self.workdir, f"fuzz-{self.boots}.dsk").name
-        self.machine = ScriptedMachine(disk, cwd=self.workdir, line_limit=self.line_limit)
+        self.disk = fresh_disk(self.workdir, f"fuzz-{self.boots}.dsk").name
+        self.machine = ScriptedMachine(self.disk, cwd=self.workdir, line_limit=self.line_limit)
         if not (self.machine.line(START_MARKER).ok and self.machine.line(CHECK_WORD).ok):
             raise RuntimeError("the fuzz's check word does not compile on a fresh boot")
 
@@ -150,8 +160,9 @@ class Fuzzer:
             self.machine.close()
 
 
-def fuzz(lines, seed, line_limit=LINE_LIMIT, progress=None):
-    """Run `lines` random lines from `seed`; the Report."""
+def fuzz(lines, seed, line_limit=LINE_LIMIT, progress=None, writer_rounds=WRITER_ROUNDS):
+    """Run `lines` random lines from `seed`, the move, then `writer_rounds` rounds of
+    two simulators on one image; the Report."""
     report, maker = Report(), LineMaker(seed)
     start = time.monotonic()
     with tempfile.TemporaryDirectory(prefix="fuzz-") as tmp:
@@ -168,6 +179,9 @@ def fuzz(lines, seed, line_limit=LINE_LIMIT, progress=None):
             failure = fuzzer.robot_move(report)
             if failure:
                 report.counters, report.move_failure = (), failure
+            report.writer_rounds = writer_rounds
+            report.two_writers = two_writers.check(fuzzer.machine, Path(tmp), fuzzer.disk,
+                                                   writer_rounds, seed)
         finally:
             fuzzer.close()
     report.seconds = time.monotonic() - start
@@ -179,10 +193,13 @@ def main(argv=None):
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--lines", type=int, default=10000, help="random lines (default 10000)")
     parser.add_argument("--seed", type=int, default=1983, help="the generator's seed")
+    parser.add_argument("--writer-rounds", type=int, default=WRITER_ROUNDS,
+                        help=f"second simulators on the image (default {WRITER_ROUNDS})")
     args = parser.parse_args(argv)
-    if args.lines < 1:
-        parser.error("--lines must be at least 1")
-    report = fuzz(args.lines, args.seed, progress=lambda s: print(s, flush=True))
+    if args.lines < 1 or args.writer_rounds < 0:
+        parser.error("--lines must be at least 1, --writer-rounds at least 0")
+    report = fuzz(args.lines, args.seed, progress=lambda s: print(s, flush=True),
+                  writer_rounds=args.writer_rounds)
     print(report.text())
     return 0 if report.passed else 1
 

@@ -5,7 +5,9 @@
 
 Kinds: undefined words, bad numbers, unbalanced control structures, stack
 abuse, BASE outside 2..36, CATCH/THROW misuse, reversed block ranges and
-blocks off the disk; never a raw memory store (no ! C! FILL MOVE SP! RP! TO,
+blocks off the disk; issue 16's: the return stack misused (>R R> R@ 2>R 2R> in
+and out of loops), control structures at the prompt that lay down with , and
+ALLOT, REFILL (the next line is what it reads); never a raw memory store (no ! C! FILL MOVE SP! RP! TO,
 no EXECUTE or CATCH of a number: those two come only after a line that empties
 the stack), no kernel word redefined (a defining or parsing word always takes a
 name never used before, so compiled into a definition it is an error, not a word
@@ -33,6 +35,19 @@ BODY_ONLY = ["I", "J", "LEAVE", "EXIT", "UNLOOP EXIT", "RECURSE", "IF", "ELSE", 
 OPEN_DO = ["2 0 DO", "3 0 DO", "4 1 ?DO", "1 1 ?DO"]
 CATCHABLE = ["DUP", "DROP", "NOSUCH", ".", "THROW", "ABORT", "DEPTH", "2DROP"]
 EMPTIES_STACK = "EMPTY-THE-STACK"     # never defined: its error empties the stacks
+# the return stack misused inside a definition that runs at once: each leaves
+# EXIT a small number, its own caller's return or a loop running away; an EXIT
+# to an arbitrary stack value (a bare >R) can land inside the kernel, which the
+# kernel does not claim to catch (forth/README.md, What protects you): typed only
+RETURN_STACK = ["5 >R R> .", "1 2 2>R 2R> + .", "7 >R R@ . R> DROP", "1 >R", "40 >R",
+                "R>", "R> DROP", "2R>", "R@ .", "1 2 2>R", "3 0 DO I >R LOOP",
+                "3 0 DO R> DROP LOOP", "2 0 DO I >R R> . LOOP", "4 0 DO 1 >R LOOP",
+                "2 0 DO 1 2 2>R 2R> 2DROP LOOP", "0 >R EXIT", "-1 >R", "3 >R 2 >R"]
+RETURN_STACK_TYPED = [">R", "I >R", "R>", "2>R", "R@", "2R>", "1 >R R>"]
+LAYS_DOWN = ["3 0 DO I , LOOP", "2 0 DO 4 ALLOT LOOP", "1 IF 7 , THEN", "4 0 DO I C, LOOP ALIGN",
+             "0 IF 9 , ELSE 8 , THEN", "BEGIN 5 , 1 UNTIL", "2 0 DO HERE , 2 ALLOT LOOP", "-4 ALLOT"]
+REFILLS = ["REFILL DROP", "REFILL . SOURCE TYPE", "1 2 REFILL DROP .S",
+           "-1 [IF] 2 [ELSE] 3 [THEN] 4 REFILL DROP", "0 [IF] 5 [ELSE] 6 REFILL [THEN] . ."]
 THROW_CODES = [0, 1, 5, -1, -2, -3, -4, -5, -13, -22, -28, -256, 32767, -32768]
 WORDS_WITH_NAMES = ["VARIABLE", "CONSTANT", "CREATE", "VALUE", ":", "FORGET", "MARKER", "'",
                     "POSTPONE", "CHAR", "[CHAR]", "SEE"]
@@ -115,6 +130,22 @@ class LineMaker:
         end = self.rng.choice([" ;", " ;", " ;", "", " ; ;"])
         return f": {name} {self.body(0, self.rng.randint(1, 8))}{end}"
 
+    def issue16(self):
+        """The return stack misused, in a definition run at once or typed; a
+        structure at the prompt laying down data after CREATE; REFILL."""
+        r = self.rng
+        kind = r.random()
+        if kind < 0.45:
+            name = f"F{self.defined}"
+            self.defined += 1
+            return f": {name} {r.choice(RETURN_STACK)} ; {name}"
+        if kind < 0.60:
+            return r.choice(RETURN_STACK + RETURN_STACK_TYPED)
+        if kind < 0.85:
+            self.names += 1
+            return f"CREATE N{self.names} {r.choice(LAYS_DOWN)} N{self.names} @ ."
+        return r.choice(REFILLS)
+
     def line(self):
         if self.pending:
             return self.pending.pop(0)
@@ -148,8 +179,10 @@ class LineMaker:
                              "<# 100 0 DO 65 HOLD LOOP", "<# #S #>", "0 0 <# #S #> TYPE"])
         elif kind < 0.90:
             text = self.body(0, r.randint(1, 4)) + " " + r.choice(["THEN", "LOOP", ";", "ELSE"])
-        elif kind < 0.95:
+        elif kind < 0.92:
             text = " ".join(self.undefined() for _ in range(r.randint(1, 4)))
+        elif kind < 0.97:
+            text = self.issue16()
         else:
             text = f'S" {self.body(0, 3, calls=False)}" EVALUATE'
         return text[:200]

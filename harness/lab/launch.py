@@ -17,7 +17,7 @@ class LabProcess:
     """`python -m harness lab` on a copy of the pristine disk, on a free port."""
 
     def __init__(self, tmp, speed="full"):
-        disk = fresh_disk(tmp)
+        self.disk = disk = fresh_disk(tmp)
         self.log = Path(tmp) / "lab.log"
         with open(self.log, "w") as log:
             self.proc = subprocess.Popen(

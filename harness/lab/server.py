@@ -1,9 +1,14 @@
 """The lab bench's web server (aiohttp): the page, its assets, one websocket.
 
-Messages to the page (JSON): hello (end stops, servo names, the console so far),
-con (console output), data (plant samples, simulated time, run state, the
-servo's words; about 30 a second, 10 at full speed), ended. From the page: key
-(typed text), speed (real, x10, full), pause, run, step. Who may connect: guard.py.
+The messages both ways are defined once, in protocol.py; every message from a
+page is checked against it, and one that is not the protocol's gets one `error`
+back and changes nothing. Who may connect: guard.py.
+
+One keyboard per lab: one source (a page, or the shell the lab was started in)
+holds it; the others watch and are told who holds it; a page takes it with its
+button (`take`), the shell with ^T. The first to type takes it when nobody holds
+it. A new holder starts on an empty line (^U after an unfinished one), so lines
+never mix.
 """
 import asyncio
 import json
@@ -13,7 +18,7 @@ from pathlib import Path
 
 from aiohttp import WSMsgType, web
 
-from harness.lab import guard, shell_terminal
+from harness.lab import guard, protocol, shell_terminal
 from harness.lab.feed import plant_row, thin, words_of
 from harness.lab.servo_watch import PER_AXIS, SINGLE, ServoWatch
 from harness.lab.session import SPEEDS, Simulator
@@ -33,20 +38,25 @@ FULL_SPEED_FRAME_S = 1 / 10      # at full speed: snapshots anyway, and Chromium
 PROBE_S = 1.0                    # how often the dictionary's heads are looked at
 ROWS_PER_FRAME = 400             # more than this (fast runs) are thinned per axis
 SCROLLBACK = 1 << 17
+SHELL = "the shell"
+TAKE_KEY = b"\x14"               # ^T in the shell: take the keyboard
 
 
 class Lab:
     """The simulator, the servo watch and the connected pages."""
 
-    def __init__(self, simulator, disk, symbols, speed="real"):
+    def __init__(self, simulator, disk, symbols, speed="real", read_only=False):
         self.sim = Simulator(simulator, disk, self.on_console, self.on_lab, self.on_ended,
-                             speed, page=self.to_pages)
+                             speed, page=self.to_pages, read_only=read_only)
         self.shell_echo = None           # the shell's terminal, when it types too
         self.watch = ServoWatch(symbols)
-        self.pages = set()
+        self.pages = {}                  # websocket -> its name ("page 3")
+        self.opened = 0
+        self.holder = None               # who holds the keyboard: a websocket, SHELL, None
         self.scrollback = bytearray()
         self.rows = []
-        self.status = {"time": 0.0, "tick": 0, "state": "run", "speed": speed, "power": "off"}
+        self.status = {"time": 0.0, "tick": 0, "state": "run", "speed": speed, "power": "off",
+                       "waiting": 0}
         self.servo = {}
         self.sent = None                 # the status and servo words the pages last had
         self.done = asyncio.Event()
@@ -98,15 +108,69 @@ class Lab:
             if not ws.closed:
                 asyncio.ensure_future(ws.send_str(text))
 
-    def hello(self):
+    def tell(self, ws, message):
+        if not ws.closed:
+            asyncio.ensure_future(ws.send_str(json.dumps(message)))
+
+    def hello(self, ws):
         return {"t": "hello", "stops": self.sim.stops, "plant": self.sim.plant.message(),
                 "per_axis": PER_AXIS, "single": SINGLE, "status": self.status,
-                "con": self.scrollback.decode("latin-1")}
+                "con": self.scrollback.decode("latin-1"), "keyboard": self.keyboard(ws)}
+
+    def note(self, text):
+        """A line from the lab to everyone who watches (pages and shell)."""
+        self.on_console(f"\r\n[lab] {text}\r\n".encode())
+
+    # ---- the keyboard ---------------------------------------------------------------
+    def holder_name(self):
+        return SHELL if self.holder == SHELL else self.pages.get(self.holder)
+
+    def keyboard(self, ws):
+        return {"t": "keyboard", "holder": self.holder_name(), "you": self.holder is ws}
+
+    def take(self, source):
+        if self.holder is source:
+            return
+        self.sim.erase_line()
+        self.holder = source
+        for ws in list(self.pages):
+            self.tell(ws, self.keyboard(ws))
+        if self.shell_echo and source != SHELL:
+            self.shell_echo(f"\r\n[lab] {self.holder_name()} holds the keyboard now; "
+                            "^T takes it back.\r\n".encode())
+
+    def release(self, source):
+        if self.holder is source:
+            self.holder = None
+            for ws in list(self.pages):
+                self.tell(ws, self.keyboard(ws))
+
+    def may_type(self, source):
+        if self.holder is None:
+            self.take(source)
+        return self.holder is source
+
+    def shell_keys(self, data):
+        """The shell's keys: ^T takes the keyboard; typed while a page holds it,
+        they are refused with a line saying so."""
+        if TAKE_KEY in data:
+            self.take(SHELL)
+            data = data.replace(TAKE_KEY, b"")
+        if data and not self.may_type(SHELL):
+            self.shell_echo(f"\r\n[lab] {self.holder_name()} holds the keyboard: "
+                            "^T takes it.\r\n".encode())
+            return
+        self.typed(data)
+
+    def typed(self, data):
+        for note in self.sim.keys(data):
+            self.note(note)
 
     async def frames(self):
         while not self.done.is_set():
             await asyncio.sleep(frame_interval(self.status["speed"]))
             rows, self.rows = thin(self.rows, ROWS_PER_FRAME), []
+            self.status["waiting"] = self.sim.waiting()
             state = json.dumps([self.status, self.servo])
             if self.pages and news(rows, state, self.sent):
                 self.broadcast({"t": "data", "rows": rows, "status": self.status,
@@ -120,17 +184,45 @@ class Lab:
             await asyncio.sleep(PROBE_S)
 
     # ---- from the pages -------------------------------------------------------------
-    def on_message(self, message):
-        kind = message.get("t")
-        if kind == "key" and isinstance(message.get("d"), str):
-            self.sim.keys(message["d"].encode("latin-1", "replace"))
-        elif kind == "speed" and message.get("v") in SPEEDS:
-            self.status["speed"] = message["v"]
-            self.sim.command(f"speed {SPEEDS[message['v']]}")
-        elif kind == "power" and message.get("v") in ("on", "off"):
-            self.sim.command(f"power {message['v']}")
-        elif kind in ("pause", "run", "step"):
-            self.sim.command(kind)
+    def on_text(self, ws, text):
+        """One message from a page: checked against the protocol, then acted on;
+        a bad one gets one `error` back and changes nothing."""
+        try:
+            kind, message = protocol.parse(text)
+            getattr(self, f"on_{kind}")(ws, message)
+        except protocol.Refused as why:
+            self.tell(ws, {"t": "error", "why": str(why)})
+
+    def on_key(self, ws, message):
+        data = message["d"].encode("latin-1", "replace")
+        if not self.may_type(ws):
+            raise protocol.Refused(f"{self.holder_name()} holds the keyboard: "
+                                   "take it to type here")
+        room = self.sim.room()
+        if len(data) > room and data.strip(b"\x03\x05"):      # ^C and ^E always go
+            raise protocol.Refused(f"the input queue is full ({self.sim.waiting()} characters "
+                                   f"waiting, room for {room}): send again later")
+        self.typed(data)
+        self.tell(ws, {"t": "input", "waiting": self.sim.waiting(), "room": self.sim.room()})
+
+    def on_take(self, ws, message):
+        self.take(ws)
+
+    def on_speed(self, ws, message):
+        self.status["speed"] = message["v"]
+        self.sim.command(f"speed {SPEEDS[message['v']]}")
+
+    def on_power(self, ws, message):
+        self.sim.command(f"power {message['v']}")
+
+    def on_pause(self, ws, message):
+        self.sim.command("pause")
+
+    def on_run(self, ws, message):
+        self.sim.command("run")
+
+    def on_step(self, ws, message):
+        self.sim.command("step")
 
 
 def frame_interval(speed):
@@ -150,8 +242,7 @@ def make_app(lab, token, port_of):
     """The aiohttp application; port_of() gives the port it listens on."""
 
     def check(request, websocket=False):
-        why = guard.refusal(request.host, request.query.get("token"),
-                            None if websocket else request.cookies.get(guard.COOKIE),
+        why = guard.refusal(request.host, request.query.get("token") if websocket else None,
                             token, port_of(), request.headers.get("Origin"), websocket)
         if why:
             raise web.HTTPForbidden(text=f"lab: {why}\n")
@@ -159,7 +250,6 @@ def make_app(lab, token, port_of):
     async def page(request):
         check(request)
         response = web.FileResponse(STATIC / "lab.html")
-        response.set_cookie(guard.COOKIE, token, httponly=True, samesite="Strict")
         response.headers["Cache-Control"] = "no-store"
         return response
 
@@ -175,20 +265,21 @@ def make_app(lab, token, port_of):
 
     async def socket(request):
         check(request, websocket=True)
-        ws = web.WebSocketResponse(heartbeat=20)
+        ws = web.WebSocketResponse(heartbeat=20)   # aiohttp's 4 MB at most; protocol.py less
         await ws.prepare(request)
-        lab.pages.add(ws)
-        await ws.send_str(json.dumps(lab.hello()))
+        lab.opened += 1
+        lab.pages[ws] = f"page {lab.opened}"
+        await ws.send_str(json.dumps(lab.hello(ws)))
         lab.sent = None                   # the next frame brings it the servo's words
         try:
             async for msg in ws:
                 if msg.type == WSMsgType.TEXT:
-                    try:
-                        lab.on_message(json.loads(msg.data))
-                    except (ValueError, AttributeError):
-                        pass                      # not a message of ours: ignored
+                    lab.on_text(ws, msg.data)
+                elif msg.type == WSMsgType.BINARY:
+                    lab.tell(ws, {"t": "error", "why": "binary messages are not the lab's"})
         finally:
-            lab.pages.discard(ws)
+            lab.pages.pop(ws, None)
+            lab.release(ws)
         return ws
 
     app = web.Application()
@@ -197,11 +288,11 @@ def make_app(lab, token, port_of):
     return app
 
 
-async def serve(simulator, disk, symbols, port, speed, announce):
+async def serve(simulator, disk, symbols, port, speed, announce, read_only=False):
     """Run the lab until the user leaves; True if every UPDATEd block was written
     and the disk detached, None if the simulator exited by itself."""
     token = guard.new_token()
-    lab = Lab(simulator, disk, symbols, speed)
+    lab = Lab(simulator, disk, symbols, speed, read_only)
     runner = None
 
     def port_of():
@@ -214,7 +305,7 @@ async def serve(simulator, disk, symbols, port, speed, announce):
     lab.sim.start()
     announce(f"http://127.0.0.1:{port_of()}/?token={token}")
     loop = asyncio.get_running_loop()
-    shell = shell_terminal.attach(loop, lab.sim.keys)
+    shell = shell_terminal.attach(loop, lab.shell_keys)
     if shell:
         lab.shell_echo = shell[0]
     tasks = [asyncio.ensure_future(lab.frames()), asyncio.ensure_future(lab.probes())]

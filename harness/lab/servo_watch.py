@@ -1,5 +1,8 @@
 """Which memory words the lab watches: the 1983 servo's variables, found by name
-in the running FORTH's dictionary (pure logic: commands out, memory rows in).
+in the running FORTH's dictionary (pure logic: commands out, memory rows in);
+and, once blocks 1070-1078 are loaded, the ASN's trial, steps, payoff and late
+moves (watched each tick) and its 72 weights (dumped with each probe: they
+change once a step, and the LAB device watches at most 64 words).
 
 Every probe the lab asks the LAB device for the FORTH vocabulary's chain
 heads and DP (HERE). When they change (a LOAD, a FORGET) it dumps the dictionary,
@@ -11,7 +14,8 @@ from harness.machine.plant_rows import AXES
 
 ORIGIN = 0o2000                      # the kernel and the dictionary start here
 PER_AXIS = ("Desire.Pos", "State", "Velocity", "0-Vel", "Command.Status", "MaxVel")
-SINGLE = ("Dir",)
+SINGLE = ("Dir", "Trial.No", "Steps", "Z.Was", "Late")
+DUMPED = {"Weights": 72}             # the ASN's 4 x 18 weights (docs/learning.md)
 
 
 def signed(word):
@@ -31,8 +35,10 @@ class ServoWatch:
         self.found = {}
 
     def probe(self):
-        """The commands that read the chain heads and HERE."""
-        return [f"dump {self.vocabulary:o} {CHAINS}", f"dump {self.fence:o} 1", f"dump {self.dp:o} 1"]
+        """The commands that read the chain heads and HERE, and the dumped arrays."""
+        return [f"dump {self.vocabulary:o} {CHAINS}", f"dump {self.fence:o} 1",
+                f"dump {self.dp:o} 1"] + [f"dump {self.found[name]:o} {n}"
+                                          for name, n in DUMPED.items() if name in self.found]
 
     def _state(self):
         return tuple(self.memory.word(self.vocabulary + 2 * i) for i in range(CHAINS)) + (
@@ -58,7 +64,8 @@ class ServoWatch:
     def _watch_command(self):
         fence = self.memory.word(self.fence)
         self.found = {name: body for name, body in
-                      find_bodies(self.memory, self.vocabulary, PER_AXIS + SINGLE).items()
+                      find_bodies(self.memory, self.vocabulary,
+                                  PER_AXIS + SINGLE + tuple(DUMPED)).items()
                       if body > fence}
         layout, addresses = [], []
         for name in PER_AXIS:
@@ -79,11 +86,17 @@ class ServoWatch:
         self.layout = layout if addresses == wanted else []
 
     def values(self, words):
-        """{name: [x, y, z, t]} or {name: value} from a W row's words (signed)."""
+        """{name: [x, y, z, t]} or {name: value} from a W row's words (signed);
+        a dumped array, once its dump arrived, as {name: [values]}."""
         table = {}
         for (name, axis), word in zip(self.layout, words):
             if axis is None:
                 table[name] = signed(word)
             else:
                 table.setdefault(name, [None] * 4)[axis] = signed(word)
+        for name, n in DUMPED.items():
+            if name in self.found:
+                cells = [self.memory.word(self.found[name] + 2 * i) for i in range(n)]
+                if None not in cells:
+                    table[name] = [signed(w) for w in cells]
         return table

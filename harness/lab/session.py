@@ -4,11 +4,18 @@ The machine boots as in `make run`, with the LAB device (pdp11-devices/lab/lab.c
 attached to a FIFO in a private temporary directory; a second FIFO carries the
 lab's commands (speed, pause, step, watch, dump) to the device. Everything is
 read on the asyncio loop, so the simulator never waits long for a reader.
-Leaving (BYE, ^D, ^C or QUIT at sim>, or close()) is the console's: FLUSH, check,
-detach, quit (harness/machine/console_session.py).
+Leaving (BYE, ^D, ^C at sim>, the FORTH's BYE word, or close()) is the console's:
+FLUSH, check, detach, quit (harness/machine/console_session.py). SIMH's QUIT,
+EXIT or BYE typed at the page's sim> FLUSH inside the simulator
+(pdp11-devices/simh/leave_check.c); the lab then reports from its exit status.
+Keys go through a KeyFeed (harness/machine/key_feed.py): never a blocking write,
+a bounded queue (QUEUE_LIMIT) whose room the pages are told.
+A lab's temporary directory holds lab.pid; a new lab removes the directories of
+labs whose process is gone (killed, so they could not clean up).
 """
 import asyncio
 import os
+import shutil
 import sys
 import tempfile
 from pathlib import Path
@@ -18,30 +25,65 @@ import pexpect
 from harness.lab.feed import Lines, lab_row
 from harness.machine import plant_rows, simh
 from harness.machine.build import KERNEL, ROOT
-from harness.machine.console_session import RACK_OFF, leave, say
+from harness.machine.console_session import (RACK_OFF, bye_halt, leave, say,
+                                             simh_exit_report)
 from harness.machine.console_watch import Leave, LineWatcher
+from harness.machine.key_feed import KeyFeed, shown
 
 SPEEDS = {"real": 1, "x10": 10, "full": 0}
 READ_CHUNK = 1 << 16
+QUEUE_LIMIT = 1 << 16        # characters waiting for the simulator; the pages send within it
+PUMP_S = 0.005               # how often waiting keys are offered to the pty
+TMP_PREFIX = "lab-"
 
 
-def boot_script(disk, lab_fifo, speed, kernel=KERNEL):
+def remove_stale(tmp_root=None):
+    """Remove the temporary directories of labs whose process is gone; their names."""
+    removed = []
+    for folder in Path(tmp_root or tempfile.gettempdir()).glob(f"{TMP_PREFIX}*"):
+        try:
+            pid = int((folder / "lab.pid").read_text())
+        except (OSError, ValueError):
+            continue                              # not a lab's, or not ours to judge
+        if not _alive(pid):
+            shutil.rmtree(folder, ignore_errors=True)
+            removed.append(folder.name)
+    return removed
+
+
+def _alive(pid):
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    return True
+
+
+def boot_script(disk, lab_fifo, speed, kernel=KERNEL, read_only=False):
     """The lab's machine: the LAB device on its FIFO, the rack off as in make run
     (the page has the switch)."""
     return simh.boot_script(disk, kernel, setup=f"attach lab {lab_fifo}\n"
-                            f"set lab speed={speed}\n{RACK_OFF}\n")
+                            f"set lab speed={speed}\n{RACK_OFF}\n", read_only=read_only)
 
 
 class Simulator:
     """One lab machine. Callbacks (called on the loop): console(bytes),
     lab(LabRow), ended(safe: bool, or None when the simulator exited by itself)."""
 
-    def __init__(self, simulator, disk, console, lab, ended, speed="real", page=None):
+    def __init__(self, simulator, disk, console, lab, ended, speed="real", page=None,
+                 read_only=False):
         self.callbacks = console, lab, ended
         self.page = page or console               # the leaving report: the page's copy
         self.simulator, self.disk, self.speed = simulator, disk, speed
-        self.tmp = tempfile.TemporaryDirectory(prefix="lab-")
-        self.watcher = LineWatcher()
+        self.read_only = read_only
+        remove_stale()
+        self.tmp = tempfile.TemporaryDirectory(prefix=TMP_PREFIX)
+        (Path(self.tmp.name) / "lab.pid").write_text(str(os.getpid()))
+        self.watcher = LineWatcher(bye_halt(KERNEL))
+        self.feed = None
+        self.keys_waiting = None
         self.child = None
         self.fds = {}
         self.leaving = False
@@ -59,10 +101,14 @@ class Simulator:
         self.fds["lab"] = os.open(lab_fifo, os.O_RDONLY | os.O_NONBLOCK)
         self.ctl = os.open(tmp / "lab.ctl", os.O_RDWR | os.O_NONBLOCK)
         ini = tmp / "lab.ini"
-        ini.write_text(boot_script(self.disk, lab_fifo, SPEEDS[self.speed]))
+        ini.write_text(boot_script(self.disk, lab_fifo, SPEEDS[self.speed],
+                                   read_only=self.read_only))
         self.child = pexpect.spawn(str(self.simulator), [str(ini)], timeout=None,
                                    dimensions=(24, 80), cwd=str(ROOT))
         self.child.delaybeforesend = None
+        self.feed = KeyFeed(self.child.child_fd, self.child.pid, limit=QUEUE_LIMIT)
+        self.keys_waiting = asyncio.Event()
+        self.pumping = loop.create_task(self._pump())
         lab_lines = Lines()
         console, lab, _ = self.callbacks
 
@@ -76,8 +122,16 @@ class Simulator:
         self.fds["pty"] = self.child.child_fd
 
         def read_console(data):
-            self.watcher.output(data)             # is SIMH's sim> up?
-            console(data)
+            try:
+                self.watcher.output(data)         # is SIMH's sim> up? the BYE word's halt?
+                self.feed.output(data)            # booted yet?
+                self.feed.held(self.watcher)      # the queue follows sim> coming and going
+            except Leave as way:
+                console(shown(data))
+                loop.create_task(self.close(way.how))
+                return
+            console(shown(data))
+            self.keys_waiting.set()               # what waited for the boot may go
         self._watch(loop, "pty", read_console)
 
     def _watch(self, loop, name, handle):
@@ -94,8 +148,9 @@ class Simulator:
                 self._unwatch(name)
                 if name == "pty" and not self.leaving:
                     self.leaving = True               # the simulator exited by itself
+                    self.keys_waiting.set()
                     self._release()
-                    self.callbacks[2](None)
+                    self.callbacks[2](self._exited())
                 return
             handle(data)
         loop.add_reader(fd, readable)
@@ -109,17 +164,48 @@ class Simulator:
 
     # ---- from the page ------------------------------------------------------------
     def keys(self, data):
-        """What the user typed; a way out (BYE, ^D, ^C or QUIT at sim>:
-        harness/machine/console_watch.py) starts leaving, as the console does."""
-        if self.leaving:
-            return
+        """What the user typed; notes for the user (what ^C dropped). A way out
+        (BYE, ^D, ^C at sim>: harness/machine/console_watch.py) starts
+        leaving, as the console does."""
+        if self.leaving or self.feed is None:
+            return []
         try:
-            self.watcher.feed(data)
+            notes = self.feed.typed(data, self.watcher)
         except Leave as way:
-            os.write(self.child.child_fd, way.typed)     # typed ahead of the way out
-            asyncio.get_running_loop().create_task(self.close(way.how))
-            return
-        os.write(self.child.child_fd, data)
+            self._way_out(way)
+            return []
+        self.keys_waiting.set()
+        return notes
+
+    def room(self):
+        return self.feed.room() if self.feed else 0
+
+    def waiting(self):
+        return self.feed.waiting() if self.feed and not self.leaving else 0
+
+    def erase_line(self):
+        """A new holder of the keyboard starts on an empty line: ^U after what the
+        previous one left unfinished (queued, or typed and not ended)."""
+        if self.feed and (self.watcher.line or (self.feed.queue and
+                                                self.feed.queue[-1:] not in (b"\r", b"\n"))):
+            self.keys(b"\x15")
+
+    async def _pump(self):
+        while not self.leaving:
+            try:
+                self.feed.pump(self.watcher)
+            except Leave as way:
+                self._way_out(way)
+                return
+            if self.feed.queue:
+                await asyncio.sleep(PUMP_S)
+            else:
+                self.keys_waiting.clear()
+                await self.keys_waiting.wait()
+
+    def _way_out(self, way):
+        os.write(self.child.child_fd, way.typed)     # typed ahead of the way out
+        asyncio.get_running_loop().create_task(self.close(way.how))
 
     def command(self, text):
         """A line to the LAB device (speed X, pause, run, step, watch, dump)."""
@@ -136,18 +222,33 @@ class Simulator:
         if self.leaving or self.child is None:
             return
         self.leaving = True
+        self.keys_waiting.set()                     # the pump ends
+        left = self.feed.discard()
         self.command("run")
         self._unwatch("pty")
         loop = asyncio.get_running_loop()
         echo, page = _Echo(loop, self.callbacks[0]), _Echo(loop, self.page)
         try:
-            safe = await asyncio.to_thread(self._leave, how, echo, page)
+            safe = await asyncio.to_thread(self._leave, how, echo, page, left)
         except Exception as err:                # the lab must end all the same
             print(f"[lab] leaving went wrong: {err}", file=sys.stderr)
             safe = False
         finally:
             self._release()
         self.callbacks[2](safe)
+
+    def _exited(self):
+        """The simulator ended by itself (SIMH's QUIT at the page's sim>, a refused
+        disk, a crash): the report, to the shell and the page; True when its exit
+        status says every UPDATEd block was written, None when nothing is known."""
+        code = self.child.exitstatus
+        lines, status = simh_exit_report(code, self.disk)
+        known = code in (0, simh.LEFT_WITHOUT_BLOCKS, simh.DISK_HELD)
+        if lines:
+            if known:                             # else the lab command says it
+                say(*lines)
+            self.page("".join(f"\r\n[lab] {line}" for line in lines).encode() + b"\r\n")
+        return status == 0 if known else None
 
     def _release(self):
         for name in list(self.fds):
@@ -156,13 +257,16 @@ class Simulator:
         self.child.close(force=True)
         self.tmp.cleanup()
 
-    def _leave(self, how, echo, page):
+    def _leave(self, how, echo, page, left):
         if not self.child.isalive():
             return None
         if how != "BYE":
             say(f"{how}: leaving; the FORTH FLUSHes its blocks first")
         gone = leave(self.child, self.disk, None, devices=("lab",), echo=echo)
         report = gone.report() + ["Bye."]
+        if left:
+            report.insert(0, f"{left} characters typed or pasted were still waiting: "
+                          "not sent to the machine.")
         say(*report)
         page.write("".join(f"\r\n[lab] {line}" for line in report).encode() + b"\r\n")
         return gone.safe
@@ -176,7 +280,7 @@ class _Echo:
         self.loop, self.console = loop, console
 
     def write(self, data):
-        self.loop.call_soon_threadsafe(self.console, bytes(data))
+        self.loop.call_soon_threadsafe(self.console, shown(bytes(data)))
 
     def flush(self):
         pass

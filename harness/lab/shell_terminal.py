@@ -22,7 +22,7 @@ def attach(loop, keys):
         return None
     fd_in, fd_out = sys.stdin.fileno(), sys.stdout.fileno()
     saved = termios.tcgetattr(fd_in)
-    tty.setraw(fd_in)
+    tty.setraw(fd_in, termios.TCSANOW)                # what was typed before is kept
     mode = termios.tcgetattr(fd_in)
     mode[1] |= termios.OPOST | termios.ONLCR          # oflag: "\n" still ends a line
     termios.tcsetattr(fd_in, termios.TCSANOW, mode)

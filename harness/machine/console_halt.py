@@ -2,7 +2,7 @@
 
 A trap reaches the FORTH's own handler and its prompt; what the hardware cannot
 trap still stops the machine at SIMH's sim> prompt: a HALT instruction (a wild
-jump after a raw store over the kernel, `0 2000 0 FILL`), or SIMH's stop on a
+jump after a raw store over the kernel's code, `1024 2000 0 FILL`), or SIMH's stop on a
 trap whose push found no memory. SIMH prints one line and the prompt; the
 console adds what happened and the ways on:
 

@@ -3,19 +3,22 @@
 The user types to the FORTH (or, after ^E, to SIMH's sim> prompt) directly;
 the harness watches the keystrokes only to catch the ways out
 (harness/machine/console_watch.py): BYE, ^D, the halt of the FORTH's BYE word, and at sim>
-^C or SIMH's QUIT/EXIT/BYE,
-which would otherwise end the simulator with the FORTH's UPDATEd blocks unwritten.
-Then it erases the typed line (^U, which both the FORTH and SIMH's prompt take as
+^C, which would otherwise end the simulator with the FORTH's UPDATEd blocks unwritten.
+(SIMH's QUIT, EXIT and BYE at sim> FLUSH the blocks inside the simulator,
+pdp11-devices/simh/leave_check.c; the console then reports from its exit status:
+simh_exit_report.) Then it erases the typed line (^U, which both the FORTH and SIMH's prompt take as
 "kill line"), brings the FORTH back to its prompt if SIMH had it stopped, has it
 FLUSH its block buffers, checks at sim> that no UPDATEd block is left (listing the
 ones that are), detaches the trace and the disk, quits SIMH and says what happened.
 """
 import os
 import re
+import select
 import signal
 import sys
 import tempfile
 import termios
+import tty
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -28,6 +31,7 @@ from harness.machine.build import KERNEL
 from harness.machine.console_halt import HaltWatcher
 from harness.machine.console_watch import Leave, LineWatcher
 from harness.machine.kernel_layout import KernelMapError, read_kernel_map
+from harness.machine.key_feed import KeyFeed, shown
 
 # the 11/23's pace (CLK RATE, 300K instructions/s) from the first instruction; SIMH's
 # SET THROTTLE cannot pace the kernel's WAIT (pdp11-devices/bus/kw11l.c)
@@ -42,21 +46,35 @@ RACK_OFF = "set plant power=off"
 CTRL_C, CTRL_E, CTRL_U = b"\x03", b"\x05", b"\x15"
 BUSY_WAIT = 3                      # wall seconds a running word gets before ^C stops it
 FLUSH_WAIT = 60                    # wall seconds the FORTH gets to answer FLUSH
-HINT = ("Console: leave with BYE (or ^D; ^C or QUIT at sim> too): the FORTH FLUSHes its "
-        "blocks and the disk is detached. ^E gives SIMH's sim> prompt (SHOW PLANT, then "
+HINT = ("Console: leave with BYE (or ^D; ^C, QUIT, EXIT or BYE at sim> too): the FORTH "
+        "FLUSHes its blocks and the disk is detached. ^E gives SIMH's sim> prompt (SHOW PLANT, then "
         "CONT to come back).")
 RACK_HINT = ("The amplifier rack starts OFF: the axes stand still. After Set.Up.Robot, "
              "switch it on: ^E, then SET PLANT POWER=ON, then CONT.")
 SIMH_ERROR = re.compile(r"(Unit not attached|Non-existent[^\r\n]*|[A-Z][^\r\n]*error[^\r\n]*)")
 
 
-def boot_script(disk, trace=None, fast=False, kernel=KERNEL, timed=False):
+def boot_script(disk, trace=None, fast=False, kernel=KERNEL, timed=False, read_only=False):
     """The console's machine: paced (or idling) as asked, the rack off, a trace;
     timed: each instruction takes its KDF11-A time (SET CLK TIMED)."""
     trace_line = f"attach plant {Path(trace).resolve()}\n" if trace else ""
     return simh.boot_script(disk, kernel, setup=f"{IDLE if fast else REALTIME}\n"
                             + ("set clk timed\n" if timed else "")
-                            + f"{RACK_OFF}\n{trace_line}")
+                            + f"{RACK_OFF}\n{trace_line}", read_only=read_only)
+
+
+def simh_exit_report(status, disk):
+    """(lines to say, exit status) when the simulator ended by itself with `status`."""
+    if status == simh.DISK_HELD:                 # its own line said who holds the disk
+        return [], 1
+    if status == 0:
+        return ["The simulator was left at sim> (QUIT, EXIT or BYE): it FLUSHed the "
+                f"FORTH's UPDATEd blocks first (named above, if any) and closed {disk}."], 0
+    if status == simh.LEFT_WITHOUT_BLOCKS:
+        return [f"The simulator was left with QUIT -F: the blocks named above are NOT "
+                f"SAVED in {disk}."], 1
+    return ["the simulator exited on its own: blocks UPDATEd since the last FLUSH, if "
+            f"any, were not written to {disk}"], 1
 
 
 def say(*lines):
@@ -210,8 +228,7 @@ def leave(child, disk, trace, kernel=KERNEL, busy_wait=BUSY_WAIT, devices=(), ec
         for unit in (("plant",) if trace else ()) + tuple(devices):
             _detach(child, unit)
         gone.detach = _detach(child, "rl0")
-        child.send(b"quit\r")
-        child.expect(pexpect.EOF, timeout=15)
+        pty_child.quit_simh(child)       # the report names the blocks a refusal would
     except (pexpect.TIMEOUT, pexpect.EOF) as err:
         gone.notes.append(f"the simulator stopped answering while leaving "
                           f"({type(err).__name__})")
@@ -221,43 +238,78 @@ def leave(child, disk, trace, kernel=KERNEL, busy_wait=BUSY_WAIT, devices=(), ec
 
 
 HANGUP = "the terminal closed"
-
-
-def _typed(watcher):
-    """interact()'s input filter: the watcher's, and the terminal going away (end
-    of input, which pexpect would otherwise read again at once, for ever) is a way
-    out like BYE, so the FORTH still FLUSHes."""
-    def feed(data):
-        if not data:
-            raise Leave(HANGUP)
-        return watcher.feed(data)
-    return feed
+PUMP_S = 0.005                     # how often waiting keys are offered to the pty
 
 
 def _on_hangup(signum, frame):
     raise Leave(HANGUP)
 
 
-def _interact(child, typed, shown):
-    """pexpect's interact. A way out raised inside it stays the way out even when
-    interact's clean-up then fails to restore a terminal that has gone away."""
+def _raw(fd):
+    """The terminal in raw mode, as SIMH's console wants it; the mode to restore."""
+    if not os.isatty(fd):
+        return None
+    saved = termios.tcgetattr(fd)
+    tty.setraw(fd, termios.TCSANOW)           # what was typed before is kept
+    return saved
+
+
+def _restore(fd, saved):
+    if saved is not None:
+        try:
+            termios.tcsetattr(fd, termios.TCSAFLUSH, saved)
+        except termios.error:
+            pass                             # the terminal has gone away
+
+
+def _converse(child, feed, watcher, halts):
+    """The user's terminal joined to the simulator's, until the simulator exits
+    (returns) or the user leaves (Leave). Keys go through `feed`, never with a
+    blocking write: the machine's output is read all the while. The end of
+    input (the terminal closed) is a way out like BYE, so the FORTH still
+    FLUSHes."""
+    fd_in, fd_out, fd_sim = sys.stdin.fileno(), sys.stdout.fileno(), child.child_fd
+    saved = _raw(fd_in)
     try:
-        child.interact(escape_character=None, input_filter=typed, output_filter=shown)
-    except termios.error as err:
-        if isinstance(err.__context__, Leave):
-            raise err.__context__ from None
-        raise
+        while True:
+            ready, _, _ = select.select([fd_in, fd_sim], [], [], PUMP_S if feed.queue else None)
+            if fd_sim in ready:
+                try:
+                    data = os.read(fd_sim, 1 << 16)
+                except OSError:
+                    data = b""
+                if not data:
+                    return
+                feed.output(data)
+                _show(fd_out, shown(halts.feed(watcher.output(data))))
+            if fd_in in ready:
+                data = os.read(fd_in, 1 << 16)
+                if not data:
+                    raise Leave(HANGUP)
+                for note in feed.typed(data, watcher):
+                    say(note)
+            feed.pump(watcher)
+    finally:
+        _restore(fd_in, saved)
+
+
+def _show(fd, data):
+    try:
+        os.write(fd, data)
+    except OSError:
+        pass                                 # nobody reads a closed terminal
 
 
 def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BUSY_WAIT,
-            timed=False):
+            timed=False, read_only=False):
     """Run the console until the user leaves; the exit status (0: all written)."""
     with tempfile.TemporaryDirectory(prefix="console-") as tmp:
         ini = Path(tmp) / "console.ini"
-        ini.write_text(boot_script(disk, trace, fast, kernel, timed))
+        ini.write_text(boot_script(disk, trace, fast, kernel, timed, read_only))
         pace = "full speed" if fast else ("real-time pace (KDF11-A instruction times)" if timed
                                           else "real-time pace (300K instructions/s)")
-        print(f"[console] booting the FORTH on the PDP-11/23, {pace}, disk {disk}")
+        mode = " (read-only: FLUSH will fail)" if read_only else ""
+        print(f"[console] booting the FORTH on the PDP-11/23, {pace}, disk {disk}{mode}")
         print(f"[console] {HINT}")
         print(f"[console] {RACK_HINT}")
         sys.stdout.flush()
@@ -266,10 +318,11 @@ def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BU
                               dimensions=(size.lines, size.columns))
         child.delaybeforesend = None
         watcher = LineWatcher(bye_halt(kernel))
+        feed = KeyFeed(child.child_fd, child.pid)
         hangup = signal.signal(signal.SIGHUP, _on_hangup)
         try:
             halts = HaltWatcher(kernel, kernel_layout.entry(Path(kernel).with_suffix(".map")) or 0)
-            _interact(child, _typed(watcher), lambda data: halts.feed(watcher.output(data)))
+            _converse(child, feed, watcher, halts)
         except Leave as way:
             signal.signal(signal.SIGHUP, signal.SIG_IGN)     # leaving: no second hangup
             if way.how == HANGUP:
@@ -277,12 +330,16 @@ def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BU
             if way.how != "BYE":
                 say(f"{way.how}: leaving; the FORTH FLUSHes its blocks first")
             child.send(way.typed)                # typed ahead of the way out
+            left = feed.discard()
+            if left:
+                say(f"{left} characters typed after the way out were not sent to the machine")
             gone = leave(child, disk, trace, kernel, busy_wait)
             say(*gone.report(), "Bye.")
             return 0 if gone.safe else 1
         finally:
             signal.signal(signal.SIGHUP, hangup)
             pty_child.close(child)
-        say("the simulator exited on its own: blocks UPDATEd since the last FLUSH, if "
-            f"any, were not written to {disk}")
-        return 1
+        lines, status = simh_exit_report(child.exitstatus, disk)
+        if lines:
+            say(*lines)
+        return status

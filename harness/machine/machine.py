@@ -128,8 +128,7 @@ class Machine:
                 if not self.at_sim_prompt:
                     self.child.sendcontrol("e")
                     self.child.expect(SIM_PROMPT, timeout=5)
-                self.child.sendline("quit")
-                self.child.expect(pexpect.EOF, timeout=5)
+                pty_child.quit_simh(self.child, timeout=5)   # FLUSHes, or -F
             except (pexpect.TIMEOUT, pexpect.EOF, OSError):
                 pass
             pty_child.close(self.child)

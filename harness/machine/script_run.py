@@ -13,7 +13,7 @@ import tempfile
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from harness.blocks.disk import DiskError, check_image, write_atomic
+from harness.blocks.disk import DiskError, check_image, check_not_held, write_atomic
 from harness.machine import script
 from harness.machine.build import KERNEL, PDP11, PRISTINE_DISK, fresh_disk
 from harness.machine.scripted_machine import ScriptError, ScriptedMachine
@@ -137,10 +137,13 @@ def check_writable(path):
 
 def check_start_image(disk):
     """The image a run starts from is only read (each run boots a copy): it must be
-    there, readable and RL02-sized (harness.blocks.disk.check_image); DiskError if not."""
+    there, readable and RL02-sized (harness.blocks.disk.check_image), and no other
+    simulator may be writing it; DiskError if not."""
     if disk == PRISTINE_DISK and not disk.exists():
         raise DiskError(f"{disk}: no such disk image (run make)")
     check_image(disk, writable=False)
+    check_not_held(disk, "a scripted run copies the image, and a simulator writing it "
+                   "could change it half-way: leave that one first")
 
 
 def run_file(script_path, transcript_path, trace_path, disk=PRISTINE_DISK,

@@ -50,6 +50,8 @@ SKIP_WAITS = "deposit cpu wait_enable 1"
 STOP = re.compile(r"\r\n([^\r\n]*), PC: ([0-7]+) \(([^\r\n]*)\)\r\nsim> ")
 MAX_STEP = 2**31 - 1
 EXAMINED = re.compile(r"([0-7]+):\s+([0-7]+)")
+# pdp11-devices/simh/rl_one_writer.c's refusal, after which the simulator exits
+DISK_HELD_LINE = re.compile(r"RL\d: [^\r\n]* is in use by [^\r\n]*")
 
 
 class ScriptError(RuntimeError):
@@ -92,10 +94,11 @@ FORTH_ERROR = re.compile(r"\r\nError: ([^\r\n]*)")
 class ScriptedMachine(contextlib.AbstractContextManager):
     def __init__(self, disk, trace=None, simulator=PDP11, kernel=KERNEL,
                  kernel_map=KERNEL_MAP, line_limit=60.0, wall_timeout=300, cwd=ROOT,
-                 settings=(), cue_breakpoint=False):
+                 settings=(), cue_breakpoint=False, read_only=False):
         """`disk` and `trace` are attached as given, relative to `cwd`: SIMH
-        prints them in SHOW, so a scripted run passes bare names. `settings`
-        are SIMH commands run before the trace is attached (SET PLANT ...).
+        prints them in SHOW, so a scripted run passes bare names; `read_only`
+        attaches the disk so (ATTACH -R). `settings` are SIMH commands run
+        before the trace is attached (SET PLANT ...).
         `cue_breakpoint`: stop at the cue by a SIMH breakpoint on its address
         instead (slower; the test that the CUE device stops at the same place)."""
         for what, path in (("simulator", simulator), ("kernel", kernel),
@@ -119,7 +122,7 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         ini = Path(self._tmp.name) / "boot.ini"
         ini.write_text(f"do {MACHINE_INI}\n"
                        f"{SKIP_WAITS}\n"
-                       f"attach rl0 {disk}\n"
+                       f"attach {'-r ' if read_only else ''}rl0 {disk}\n"
                        + "".join(f"{c}\n" for c in settings)
                        + (f"attach plant {trace}\n" if trace else "")
                        + f"load {Path(kernel).resolve()}\n"
@@ -145,6 +148,9 @@ class ScriptedMachine(contextlib.AbstractContextManager):
     # ---- SIMH round trips -------------------------------------------------------------
     def _expect_prompt(self, what):
         i = self.child.expect_exact([PROMPT, pexpect.EOF, pexpect.TIMEOUT])
+        held = DISK_HELD_LINE.search(self.child.before)
+        if i == 1 and held:                     # another simulator writes the disk
+            raise ScriptError(held.group(0))
         if i:
             raise ScriptError(f"the simulator {'exited' if i == 1 else 'did not answer'} "
                               f"during {what}: {self.child.before[-500:]!r}")
@@ -282,13 +288,13 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         return answer
 
     def close(self):
-        """Detach the trace and the disk (SIMH flushes them) and quit."""
-        commands = (["detach plant"] if self.trace else []) + ["detach rl0"]
+        """Detach the trace (its rows end here) and quit: SIMH's QUIT writes the
+        FORTH's UPDATEd blocks first (pdp11-devices/simh/leave_check.c), or, when it
+        cannot, leaves without them (QUIT -F), and detaches the disk."""
         try:
-            for command in commands if self.child.isalive() else ():
-                self.simh(command)
-            self.child.send("quit\r")
-            self.child.expect(pexpect.EOF, timeout=10)
+            if self.trace and self.child.isalive():
+                self.simh("detach plant")
+            pty_child.quit_simh(self.child, timeout=10)
         except (ScriptError, pexpect.TIMEOUT, pexpect.EOF, OSError):
             pass            # a simulator already gone or stuck: killed below
         pty_child.close(self.child)

@@ -41,11 +41,19 @@ from harness.machine.build import KERNEL, MACHINE_INI, PDP11
 _EXAMINED = re.compile(r"^([A-Za-z0-9_]+):\t([0-9]+)\s*$", re.M)
 
 
-def boot_script(disk, kernel=KERNEL, setup=""):
-    """SIMH commands that boot the FORTH: the machine, the disk, `setup` (more
-    SIMH command lines, each ending in a newline), the kernel, start."""
+# The simulator's exit status when the startup script's disk is written by another
+# simulator (pdp11-devices/simh/rl_one_writer.c), and after QUIT -F left UPDATEd blocks
+# unwritten (pdp11-devices/simh/leave_check.c).
+DISK_HELD = 3
+LEFT_WITHOUT_BLOCKS = 1
+
+
+def boot_script(disk, kernel=KERNEL, setup="", read_only=False):
+    """SIMH commands that boot the FORTH: the machine, the disk (read_only:
+    ATTACH -R, beside a simulator that writes it), `setup` (more SIMH command
+    lines, each ending in a newline), the kernel, start."""
     return (f"do {MACHINE_INI}\n"
-            f"attach rl0 {Path(disk).resolve()}\n"
+            f"attach {'-r ' if read_only else ''}rl0 {Path(disk).resolve()}\n"
             f"{setup}"
             f"load {kernel}\n"
             "go\n")

@@ -3,15 +3,13 @@
 SIMH (scp.c, find_cmd) upper-cases the first word and takes the first entry of its
 command table that the word begins: "Q" is QUIT, "E" is EXAMINE, "EXI" is EXIT.
 The console (harness/machine/console_watch.py) needs to know, before SIMH reads the line,
-whether it ends the simulator (and with it the FORTH's unwritten block buffers) or
-lets the machine run again. Pure logic.
+whether it lets the machine run again (then ^C is the FORTH's). Pure logic.
 """
 # scp.c's cmd_table, in its order (the order decides abbreviations)
 COMMANDS = ("RESET", "EXAMINE", "IEXAMINE", "DEPOSIT", "IDEPOSIT", "EVALUATE", "RUN", "GO",
             "STEP", "CONT", "BOOT", "BREAK", "NOBREAK", "ATTACH", "DETACH", "ASSIGN",
             "DEASSIGN", "SAVE", "RESTORE", "GET", "LOAD", "DUMP", "EXIT", "QUIT", "BYE",
             "SET", "SHOW", "DO", "ECHO", "ASSERT", "HELP", "!")
-EXITS = frozenset({"EXIT", "QUIT", "BYE"})        # SIMH ends; attached files closed as they are
 RUNS = frozenset({"RUN", "GO", "STEP", "CONT", "BOOT"})   # the machine runs again
 
 

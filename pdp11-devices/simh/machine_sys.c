@@ -28,7 +28,11 @@
    (prompt_cue.c), wraps the CPU's
    examine and deposit for the I/O page (io_page_examine.c), wraps the RL02
    units' service routine so that a written block is fflush()ed and fsync()ed
-   before the controller reports it done (rl_durable.c: FLUSH is durable), and
+   before the controller reports it done (rl_durable.c: FLUSH is durable),
+   wraps their ATTACH and DETACH so that one simulator writes an image
+   (rl_one_writer.c, which also installs sim_vm_read to tell the startup
+   script from commands typed at sim>), installs sim_vm_cmd so that QUIT, EXIT
+   and BYE FLUSH the FORTH's blocks first (leave_check.c), and
    installs sim_vm_post, which scp.c calls after every command (used to end a
    SET PLANT axis selection). */
 #include "devices.h"
@@ -80,6 +84,8 @@ static void machine_vm_init (void)
     prompt_cue_install ();
     io_page_examine_install ();
     rl_durable_install ();
+    rl_one_writer_install ();
+    leave_check_install ();
     sim_vm_post = &machine_vm_post;
 }
 

@@ -58,7 +58,7 @@ def test_core_environment_answers_match_the_system(forth):
         return forth.send(f'S" {name}" ENVIRONMENT? .S 2DROP')
     assert env("MAX-N") == "<2> 32767 -1 "
     assert env("MAX-U") == "<2> -1 -1 "
-    assert env("ADDRESS-UNIT-BITS") == "<2> 16 -1 "
+    assert env("ADDRESS-UNIT-BITS") == "<2> 8 -1 "      # issue 16: a byte
     assert env("/COUNTED-STRING") == "<2> 255 -1 "
     assert forth.send('S" MAX-D" ENVIRONMENT? . D.') == "-1 2147483647 "
     assert forth.send('S" MAX-UD" ENVIRONMENT? . UD.'.replace("UD.", "<# #S #> TYPE")) == "-1 4294967295"
@@ -66,7 +66,7 @@ def test_core_environment_answers_match_the_system(forth):
     # STACK-CELLS is what the data stack holds: one more is stack overflow
     forth.send('S" STACK-CELLS" ENVIRONMENT? DROP CONSTANT #CELLS')
     forth.send(": FILL-STACK ( n -- ) 0 ?DO I LOOP ;")
-    assert forth.send("#CELLS .") == "240 "
+    assert forth.send("#CELLS .") == "216 "
     forth.send(": CLEAR S0 SP! ;")
     assert forth.send("#CELLS FILL-STACK CLEAR") == ""
     assert "stack overflow" in forth.reply("#CELLS 1+ FILL-STACK").error
@@ -216,8 +216,8 @@ def test_tools_name_tokens_synonym_traverse(forth):
                " FORTH-WORDLIST SET-CURRENT")
     forth.send(": SHOW ( nt -- f ) NAME>STRING TYPE SPACE TRUE ;")
     shown = forth.send("' SHOW WL TRAVERSE-WORDLIST").split()
-    assert sorted(shown) == ["AA", "AA", "BBB"] and shown.index("AA") < shown.index("BBB") \
-        or shown == ["AA", "AA", "BBB"]
+    # every word once; the order is the word list's chains' (Forth-2012 leaves it open)
+    assert sorted(shown) == ["AA", "AA", "BBB"]
     forth.send(": FIRST ( n nt -- nt false ) NIP FALSE ;")
     forth.send(': AA-NT 0 ' + "['] FIRST WL TRAVERSE-WORDLIST ;")
     assert forth.send("AA-NT NAME>INTERPRET EXECUTE .") in ("3 ", "2 ")

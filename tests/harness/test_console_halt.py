@@ -35,7 +35,7 @@ def test_the_real_halt_line_matches(tmp_path):
     child = pexpect.spawn(str(SIMULATOR), [str(ini)], timeout=20)
     try:
         child.expect(b" ok\r\n")
-        child.send(b"0 2000 0 FILL\r")
+        child.send(b"1024 2000 0 FILL\r")   # from 2000 octal: the kernel's code (below it: refused)
         child.expect(b"sim> ")
         w = HaltWatcher("k", 1)
         assert b"stopped by itself (HALT instruction" in w.feed(child.before + b"sim> ")

@@ -84,6 +84,25 @@ def test_pause_holds_simulated_time_and_step_is_one_tick(page):
     wait_for("the run to go on", lambda: js(page, "window.lab.status.time") > stepped["time"])
 
 
+def test_the_asn_shows_its_trial_steps_payoff_and_weights(page):
+    """Blocks 1070-1078 (docs/learning.md) after the move test's Set.Up.Robot."""
+    assert js(page, "document.getElementById('asn').hidden")
+    if js(page, "window.lab.status.state") == "pause":
+        click(page, "#pause")                        # Run
+    click(page, '#speeds button[data-speed="full"]')
+    assert "Error" not in type_line(page, "1070 LOAD")
+    type_line(page, "1 Trials", timeout=120)
+    wait_for("the ASN's words and weights", lambda: js(
+        page, "window.lab.servo['Trial.No'] === 1 && (window.lab.servo.Weights || []).length"))
+    text = wait_for("the panel to show them", lambda: (lambda t: t.startswith(
+        "ASN: trials done 1, steps ") and t)(js(page, "document.getElementById('asn-text')"
+                                                ".textContent")))
+    assert "payoff" in text and "late moves" in text
+    assert not js(page, "document.getElementById('asn').hidden")
+    assert any(js(page, "window.lab.servo.Weights"))                 # it learned something
+    page.save_screenshot(str(ARTIFACTS / "lab-asn.png"))
+
+
 def test_bye_in_the_page_leaves_and_flushes(page, lab_server):
     page.find_element(By.CSS_SELECTOR, "#terminal textarea").send_keys("BYE\n")
     assert lab_server.proc.wait(timeout=60) == 0

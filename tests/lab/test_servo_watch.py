@@ -65,7 +65,7 @@ def test_servo_watch_dumps_the_dictionary_when_it_changes_and_watches_by_name():
     d.header("State")
     direction = d.header("Dir", body_words=1)
     watch = ServoWatch(symbols())
-    assert watch.probe() == ["dump 20470 32", "dump 6462 1", "dump 6344 1"]
+    assert watch.probe() == ["dump 20470 8", "dump 6462 1", "dump 6344 1"]
     assert watch.on_memory(VOCABULARY, d.heads) == []
     assert watch.on_memory(0o6462, [fence]) == []
     command = watch.on_memory(0o6344, [d.here])
@@ -91,3 +91,24 @@ def test_servo_watch_dumps_the_dictionary_when_it_changes_and_watches_by_name():
 
 def test_signed():
     assert signed(0o177777) == -1 and signed(0o77777) == 32767 and signed(0) == 0
+
+
+def test_the_asn_words_are_watched_and_its_weights_dumped_with_each_probe():
+    d = Dictionary()
+    fence = d.here
+    trial = d.header("Trial.No", body_words=1)
+    steps = d.header("Steps", body_words=1)
+    weights = d.header("Weights", body_words=72)
+    watch = ServoWatch(symbols())
+    watch.on_memory(VOCABULARY, d.heads)
+    watch.on_memory(0o6462, [fence])
+    watch.on_memory(0o6344, [d.here])
+    d.memory.store(0o6344, [d.here])
+    d.memory.store(0o6462, [fence])
+    words = [d.memory.word(a) or 0 for a in range(ORIGIN, d.here, 2)]
+    command = watch.on_memory(ORIGIN, words)
+    assert command == [f"watch {trial:o} {steps:o}"]
+    assert watch.probe()[-1] == f"dump {weights:o} 72"     # 72 words: more than a watch holds
+    watch.on_addresses([trial, steps])
+    watch.on_memory(weights, [0o177776] + [5] * 71)
+    assert watch.values([3, 12]) == {"Trial.No": 3, "Steps": 12, "Weights": [-2] + [5] * 71}

@@ -89,18 +89,41 @@ def test_console_timed_runs_on_the_kdf11s_times(tmp_path):
     child.expect(pexpect.EOF)
 
 
-# (every abbreviation of QUIT, EXIT and BYE: tests/run/test_console_watch.py)
-@pytest.mark.parametrize("keys,how", [("\x04", None),        # ^D at sim>
-                                      ("  q\r", "SIMH's QUIT at its prompt")])
-def test_every_way_out_of_the_simh_prompt_flushes_first(tmp_path, keys, how):
+def test_ctrl_d_at_the_simh_prompt_flushes_first(tmp_path):
     child, disk = fresh_console(tmp_path)
-    write_block_word(child, f"left with {keys!r}")
+    write_block_word(child, "left with ^D")
     child.send("\x05")
     child.expect("sim> ")
-    child.send(keys)
-    if how:
-        child.expect_exact(f"[console] {how}: leaving; the FORTH FLUSHes its blocks first")
-    expect_left_safely(child, disk, f"left with {keys!r}".encode())
+    child.send("\x04")
+    expect_left_safely(child, disk, b"left with ^D")
+
+
+# the terminal's own line editing (^W erases a word, ^U the line, ^R retypes it)
+# is invisible to a keystroke watcher: the simulator itself FLUSHes (leave_check.c)
+SIMH_WAYS_OUT = {"typed": "quit\r", "abbreviated": "  q\r", "exit": "exi\r",
+                 "bye": "by\r", "^W-edited": "xyz \x17quit\r",
+                 "^U-edited": "show\x15quit\r", "^R and backspace": "qx\x7f\x12uit\r",
+                 "DO file": "do {do_file}\r"}
+
+
+@pytest.mark.parametrize("way", SIMH_WAYS_OUT)
+def test_every_simh_way_out_writes_the_updated_block_first(tmp_path, way):
+    do_file = tmp_path / "leave.do"
+    do_file.write_text("; a DO file that ends the simulator\nquit\n")
+    child, disk = fresh_console(tmp_path)
+    child.send(f"{BLOCK} BLOCK 1024 90 FILL UPDATE\r")
+    child.expect(r" ok\r\n")
+    child.send("\x05")
+    child.expect("sim> ")
+    child.send(SIMH_WAYS_OUT[way].format(do_file=do_file))
+    child.expect(rf"(QUIT|EXIT|BYE): the FORTH's UPDATEd block\(s\) {BLOCK} were written "
+                 r"to [^\r\n]* first")
+    child.expect_exact("[console] The simulator was left at sim> (QUIT, EXIT or BYE): it "
+                       "FLUSHed")
+    child.expect(pexpect.EOF)
+    child.close()
+    assert child.exitstatus == 0
+    assert block_text(disk, BLOCK) == b"Z" * 64
 
 
 def test_ctrl_c_is_the_forths_until_sim_where_it_leaves_after_flush(tmp_path):

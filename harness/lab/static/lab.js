@@ -19,11 +19,13 @@ if (params.get("token")) {          // off the address bar (and the projector), 
 }
 const socket = new WebSocket(`ws://${location.host}/ws?token=${encodeURIComponent(token || "")}`);
 const send = (message) => socket.readyState === 1 && socket.send(JSON.stringify(message));
+// The messages both ways are harness/lab/protocol.py's (tests check these against it).
 
 const lab = {                      // everything the page knows; window.lab for tests
   stops: {}, status: { time: 0, tick: 0, state: "run", speed: "real", power: "off" },
   servo: {}, perAxis: [], single: [], traces: [], latest: [],
   rowsSeen: 0, frozenAt: null, axis: 0, window: 2, ended: false, connected: false, dirty: true,
+  keyboard: { holder: null, you: false }, outbox: "", room: 4096, errors: [],
 };
 window.lab = lab;
 
@@ -44,7 +46,54 @@ function fitTerminal() {           // the largest font that shows the FORTH's 80
   fit.fit();
 }
 fitTerminal();
-term.onData((d) => send({ t: "key", d }));
+// Keys: the server holds what the machine has not read yet, within a bounded
+// queue; the page sends a paste in pieces (MAX_KEYS, protocol.py) as room is
+// reported (an `input` answer to each piece, and every data frame).
+const MAX_KEYS = 4096;
+function sendKeys() {
+  while (lab.outbox && socket.readyState === 1 && lab.keyboard.you) {
+    const n = Math.min(MAX_KEYS, lab.room, lab.outbox.length);
+    if (n <= 0) break;
+    send({ t: "key", d: lab.outbox.slice(0, n) });
+    lab.outbox = lab.outbox.slice(n);
+    lab.room -= n;
+  }
+  showInput();
+}
+lab.type = (d) => {                 // what the terminal gives, and tests
+  if (!lab.keyboard.you && lab.keyboard.holder !== null) return;   // watching
+  if (lab.keyboard.holder === null) lab.keyboard.you = true;       // the first to type takes it
+  // ^C and ^E act at once: they go ahead of a paste not yet sent; ^C drops it
+  const urgent = d.search(/[\x03\x05]/);
+  if (urgent >= 0) {
+    lab.outbox += d.slice(0, urgent);
+    if (d[urgent] === "\x03" && lab.outbox) {
+      term.write(`\r\n[lab] ^C: ${lab.outbox.length} characters not yet sent by this page were dropped\r\n`);
+      lab.outbox = "";
+    }
+    send({ t: "key", d: d[urgent] });
+    lab.type(d.slice(urgent + 1));
+    return;
+  }
+  lab.outbox += d;
+  sendKeys();
+};
+term.onData(lab.type);
+lab.take = () => send({ t: "take" });
+document.getElementById("take").addEventListener("click", () => { lab.take(); term.focus(); });
+function showInput() {
+  const waiting = (lab.status.waiting || 0) + lab.outbox.length;
+  const box = document.getElementById("waiting");
+  box.textContent = waiting ? `${waiting} characters waiting for the machine` : "";
+  box.hidden = !waiting;
+}
+function showKeyboard() {
+  const k = lab.keyboard, note = document.getElementById("keyboard");
+  note.textContent = k.you ? "You hold the keyboard"
+    : k.holder ? `Watching: ${k.holder} holds the keyboard` : "Nobody holds the keyboard: type to take it";
+  note.className = k.you ? "mine" : "";
+  document.getElementById("take").hidden = k.you || !k.holder;
+}
 term.focus();
 lab.screen = () => {               // the terminal's text, for tests
   const b = term.buffer.active, lines = [];
@@ -56,15 +105,28 @@ socket.onopen = () => { lab.connected = true; };
 socket.onmessage = (event) => {
   const m = JSON.parse(event.data);
   if (m.t === "con") term.write(m.d);
-  else if (m.t === "data") takeData(m);
+  else if (m.t === "data") { takeData(m); showInput(); }
   else if (m.t === "hello") {
     learnPlant(m.plant);
     Object.assign(lab, { stops: m.stops, perAxis: m.per_axis, single: m.single, status: m.status });
     term.write(m.con);
     buildTable();
+    takeKeyboard(m.keyboard);
     lab.dirty = true;
+  } else if (m.t === "keyboard") takeKeyboard(m);
+  else if (m.t === "input") { lab.room = m.room; lab.status.waiting = m.waiting; sendKeys(); }
+  else if (m.t === "error") {
+    lab.errors.push(m.why);
+    term.write(`\r\n\x1b[33m[lab] ${m.why}\x1b[0m\r\n`);
   } else if (m.t === "ended") showEnded(m.safe);
 };
+function takeKeyboard(k) {
+  lab.keyboard = { holder: k.holder, you: k.you };
+  if (!k.you) lab.outbox = "";       // what was not sent goes with the keyboard
+  showKeyboard();
+  sendKeys();
+}
+
 socket.onclose = () => { if (!lab.ended) showEnded(null, "the lab server went away"); };
 
 function learnPlant(plant) {
@@ -89,6 +151,7 @@ function showEnded(safe, why) {
 function takeData(m) {
   lab.dirty = true;
   lab.status = m.status;
+  if (m.status.waiting === 0 && !lab.outbox) lab.room = Math.max(lab.room, MAX_KEYS);
   lab.servo = m.servo;
   for (const row of m.rows) {
     const trace = lab.traces[row[ROW.axis]];
@@ -429,12 +492,38 @@ function drawTable() {
         return `<td${moving && n === "Command.Status" ? ' class="moving"' : ""}>${v}</td>`;
       }).join("") + "</tr>";
   });
-  const singles = lab.single.filter((n) => n in lab.servo).map((n) => `${n} = ${lab.servo[n]}`);
+  const singles = lab.single.filter((n) => n in lab.servo && !(n in ASN_WORDS))
+    .map((n) => `${n} = ${lab.servo[n]}`);
   const note = known.length
     ? `${singles.join(", ")} \u00b7 block 1000's variables, read each 60 Hz tick`
     : "The servo's variables appear once the blocks define them (1000 LOAD): they are found by name in the dictionary.";
   html += `<tr class="note"><td colspan="${lab.perAxis.length + 2}">${note}</td></tr>`;
   if (html !== tableHtml) body.innerHTML = tableHtml = html;   // unchanged: no relayout
+  drawAsn();
+}
+
+// ---- the ASN (blocks 1070-1078, docs/learning.md): trial, steps, payoff, weights --------------
+const ASN_WORDS = { "Trial.No": "trials done", "Steps": "steps", "Z.Was": "payoff", "Late": "late moves" };
+let asnText = "", asnWeights = "";
+function drawAsn() {
+  const box = document.getElementById("asn");
+  box.hidden = !("Trial.No" in lab.servo);
+  if (box.hidden) return;
+  const text = "ASN: " + Object.entries(ASN_WORDS).map(([n, label]) => `${label} ${lab.servo[n]}`).join(", ");
+  if (text !== asnText) document.getElementById("asn-text").textContent = asnText = text;
+  const w = lab.servo.Weights;
+  if (!w || w.join() === asnWeights) return;
+  asnWeights = w.join();
+  // 4 rows (+x -x +y -y) of 18 inputs (fields along x, then y): red positive, blue negative
+  const canvas = document.getElementById("asn-weights"), g = canvas.getContext("2d");
+  const cols = w.length / 4, cw = canvas.width / cols, ch = canvas.height / 4;
+  const top = Math.max(1, ...w.map(Math.abs));
+  w.forEach((v, i) => {
+    const a = Math.abs(v) / top;
+    g.fillStyle = v >= 0 ? `rgba(200,40,40,${a})` : `rgba(40,80,200,${a})`;
+    g.clearRect((i % cols) * cw, Math.floor(i / cols) * ch, cw, ch);
+    g.fillRect((i % cols) * cw, Math.floor(i / cols) * ch, cw - 1, ch - 1);
+  });
 }
 
 // ---- the frame loop -------------------------------------------------------------------------

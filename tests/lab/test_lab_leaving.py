@@ -1,0 +1,75 @@
+"""Every way out at the page's sim> writes the FORTH's UPDATEd blocks first
+(issue 23): SIMH's QUIT typed, edited with the terminal's ^W, abbreviated or read
+from a DO file, through the page's websocket; the simulator FLUSHes
+(pdp11-devices/simh/leave_check.c), the lab reports it and exits 0. And the FORTH's BYE
+word inside a line ends the lab as it ends make run."""
+import asyncio
+import contextlib
+
+import pytest
+
+from harness.lab.launch import LabProcess
+from harness.lab.page_client import Page
+
+BLOCK = 300
+BOOTED = "blocks 0-10239.\r\n ok\r\n"
+WAYS_OUT = {"typed": "quit\r", "^W-edited": "xyz \x17quit\r", "abbreviated": "q\r",
+            "DO file": "do {do_file}\r"}
+
+
+async def page_session(server, steps):
+    """Type each (keys, answer) into the page's terminal once the FORTH's first
+    prompt is up (keys typed before the machine runs would be discarded), waiting
+    for the screen to show `answer` before the next."""
+    page = await Page.open(server)
+    try:
+        await page.see(BOOTED)
+        for keys, answer in steps:
+            before = page.screen.count(answer)
+            await page.send({"t": "key", "d": keys})
+            await page.see(answer, before)
+    finally:
+        await page.close()
+
+
+@contextlib.contextmanager
+def lab(tmp_path):
+    """A lab at full speed on a fresh disk; killed if a failing test leaves it running."""
+    server = LabProcess(tmp_path)
+    try:
+        yield server
+    finally:
+        if server.proc.poll() is None:
+            server.proc.kill()
+            server.proc.wait()
+
+
+def leave_through_the_page(tmp_path, keys):
+    with lab(tmp_path) as server:
+        asyncio.run(page_session(server, [
+            (f"{BLOCK} BLOCK 1024 90 FILL UPDATE\r", "UPDATE  ok\r\n"),
+            ("\x05", "sim> "),
+            (keys, f"block(s) {BLOCK} were written to")]))
+        status = server.proc.wait(timeout=60)
+    block = (tmp_path / "robot.dsk").read_bytes()[BLOCK * 1024:(BLOCK + 1) * 1024]
+    return status, server.text(), block
+
+
+@pytest.mark.parametrize("way", WAYS_OUT)
+def test_every_simh_way_out_at_the_page_writes_the_block_first(tmp_path, way):
+    do_file = tmp_path / "leave.do"
+    do_file.write_text("quit\n")
+    status, log, block = leave_through_the_page(tmp_path, WAYS_OUT[way].format(do_file=do_file))
+    assert status == 0, log
+    assert "FLUSHed the FORTH's UPDATEd blocks first" in log
+    assert block == b"Z" * 1024
+
+
+def test_the_bye_word_inside_a_line_ends_the_lab_with_flush(tmp_path):
+    with lab(tmp_path) as server:
+        asyncio.run(page_session(server, [
+            (f"{BLOCK} BLOCK 1024 90 FILL UPDATE\r", "UPDATE  ok\r\n"),
+            ("1 . BYE\r", "Bye.")]))
+        assert server.proc.wait(timeout=60) == 0, server.text()
+    assert "FLUSH answered ok" in server.text()
+    assert (tmp_path / "robot.dsk").read_bytes()[BLOCK * 1024:(BLOCK + 1) * 1024] == b"Z" * 1024

@@ -1,0 +1,179 @@
+"""One simulator writes a disk image at a time (issue 16, item 8): the RL's
+ATTACH takes an exclusive lock (pdp11-devices/simh/rl_one_writer.c), so a second
+simulator on the same image is refused naming the holder, through every entry
+point, or attaches it read-only when asked; the lock dies with its process."""
+import os
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import time
+
+import pexpect
+import pytest
+
+from harness.cli import main
+from harness.machine import simh
+from harness.machine.scripted_machine import ScriptError, ScriptedMachine
+from tests.run.common import PRISTINE, ROOT, SIMULATOR, needs_build
+
+pytestmark = needs_build
+
+BLOCK = 300
+
+
+def boot(disk, tmp_path, read_only=False, name="boot.ini"):
+    """build/pdp11 booting the FORTH on `disk`, at its prompt."""
+    ini = tmp_path / name
+    ini.write_text(simh.boot_script(disk, read_only=read_only))
+    child = pexpect.spawn(str(SIMULATOR), [str(ini)], cwd=str(ROOT), timeout=30)
+    child.expect(rb"blocks 0-\d+\.\r\n ok\r\n")
+    return child
+
+
+@pytest.fixture
+def held(tmp_path):
+    """A disk image a running simulator writes: (disk, that simulator)."""
+    disk = tmp_path / "robot.dsk"
+    shutil.copyfile(PRISTINE, disk)
+    first = boot(disk, tmp_path, name="first.ini")
+    yield disk, first
+    first.close(force=True)
+
+
+def holder_named(text, first):
+    return re.search(rf"in use by pid {first.pid} since \d{{4}}-\d\d-\d\d "
+                     r"\d\d:\d\d:\d\d UTC", text)
+
+
+def test_a_second_simulator_by_hand_is_refused_naming_the_holder(held, tmp_path):
+    disk, first = held
+    ini = tmp_path / "second.ini"
+    ini.write_text(simh.boot_script(disk))
+    second = subprocess.run([str(SIMULATOR), str(ini)], capture_output=True, text=True,
+                            timeout=30, cwd=ROOT, stdin=subprocess.DEVNULL)
+    assert second.returncode == simh.DISK_HELD
+    assert holder_named(second.stdout, first), second.stdout
+    assert "PDP-11/23 FORTH" not in second.stdout         # no diskless boot
+
+
+def test_a_second_unit_of_the_same_simulator_is_refused_too(held):
+    disk, first = held
+    first.send(b"\x05")
+    first.expect(b"sim> ")
+    first.send(f"attach rl1 {disk}\r".encode())
+    first.expect(b"sim> ")
+    assert b"is in use by" in first.before
+    first.send(b"show rl1\r")
+    first.expect(b"sim> ")
+    assert b"not attached" in first.before
+
+
+def test_read_only_beside_the_writer_reports_a_write_as_an_error(held, tmp_path):
+    """ATTACH -R: the FORTH's FLUSH fails and says so, the block stays UPDATEd, QUIT
+    is refused naming it, QUIT -F leaves without it; the image is unchanged."""
+    disk, _ = held
+    before = disk.read_bytes()
+    reader = boot(disk, tmp_path, read_only=True)
+    reader.send(f"{BLOCK} BLOCK 1024 90 FILL UPDATE FLUSH\r".encode())
+    reader.expect(rb"RL0 block 300 write not ready: drive=\d+ write-locked\r\n"
+                  rb"Error: block write error: FLUSH")
+    reader.send(b"\x05")
+    reader.expect(b"sim> ")
+    reader.send(b"quit\r")
+    reader.expect(rb"QUIT refused: block\(s\) 300 UPDATEd and not written .* QUIT -F to "
+                  rb"leave without them\r\nsim> ")
+    reader.send(b"quit -f\r")
+    reader.expect(rb"QUIT -F: leaving without block\(s\) 300: UPDATEd, NOT SAVED")
+    reader.expect(pexpect.EOF)
+    reader.close()
+    assert reader.exitstatus == simh.LEFT_WITHOUT_BLOCKS
+    assert disk.read_bytes() == before
+
+
+def test_the_lock_dies_with_a_killed_simulator(held, tmp_path):
+    """kill -9 leaves no stale lock (flock ends with the process): the next
+    simulator attaches; the holder file left behind is rewritten."""
+    disk, first = held
+    os.kill(first.pid, signal.SIGKILL)
+    first.wait()
+    second = boot(disk, tmp_path, name="second.ini")
+    assert f"pid {second.pid} since" in (tmp_path / "robot.dsk.lock").read_text()
+    second.send(b"\x05")
+    second.expect(b"sim> ")
+    second.send(b"quit\r")
+    second.expect(pexpect.EOF)
+    assert not (tmp_path / "robot.dsk.lock").exists()       # removed at DETACH
+
+
+def test_the_console_says_it_in_one_line_and_exits_1(held, capsys):
+    disk, first = held
+    assert main(["console", "--fast", "--disk", str(disk)]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and holder_named(err[0], first), err
+
+
+def test_the_console_read_only_boots_beside_the_writer(held):
+    disk, _ = held
+    child = pexpect.spawn(sys.executable, ["-m", "harness", "console", "--fast", "--read-only",
+                                           "--disk", str(disk)], cwd=str(ROOT), timeout=30)
+    child.expect(rb"RL: unit is read only")
+    child.expect(rb"blocks 0-\d+\.\r\n ok\r\n")
+    child.send(b"BYE\r")
+    child.expect(pexpect.EOF)
+    child.close()
+    assert child.exitstatus == 0              # nothing UPDATEd: nothing lost
+
+
+def test_the_lab_says_it_in_one_line_and_exits_1(held, capsys):
+    disk, first = held
+    assert main(["lab", "--port", "0", "--disk", str(disk)]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and holder_named(err[0], first), err
+
+
+def test_a_scripted_run_says_it_in_one_line_and_exits_1(held, tmp_path, capsys):
+    disk, first = held
+    script = tmp_path / "s.forth"
+    script.write_text("1 2 + .\n")
+    assert main(["run", str(script), "--disk", str(disk)]) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and holder_named(err[0], first), err
+
+
+def test_the_scripted_machine_on_a_held_disk_names_the_holder(held):
+    """The simulator's own refusal (a second writer that got past the harness's
+    check) ends the boot; the scripted machine raises it as one line."""
+    disk, first = held
+    with pytest.raises(ScriptError) as refused:
+        ScriptedMachine(disk.name, cwd=disk.parent)
+    assert holder_named(str(refused.value), first)
+    assert "\n" not in str(refused.value)
+
+
+def test_the_bare_boot_script_paces_its_idle_prompt(tmp_path):
+    """build/robot.ini (what a SIMH user runs by hand): two wall seconds at the
+    prompt are about two simulated seconds (SET CPU IDLE), not thousands; and
+    `-r` attaches the disk read-only."""
+    disk = tmp_path / "robot.dsk"
+    shutil.copyfile(PRISTINE, disk)
+    ini = tmp_path / "robot.ini"
+    ini.write_text((ROOT / "build" / "robot.ini").read_text()
+                   .replace("local/robot.dsk", str(disk)))
+    child = pexpect.spawn(str(SIMULATOR), [str(ini)], cwd=str(ROOT), timeout=30)
+    child.expect(rb" ok\r\n")
+    start = time.monotonic()
+    time.sleep(2)
+    child.send(b"\x05")
+    child.expect(b"sim> ")
+    wall = time.monotonic() - start
+    child.send(b"show clk state\r")
+    child.expect(rb"time=([\d.]+)s")
+    simulated = float(child.match.group(1))
+    child.send(b"quit\r")
+    child.expect(pexpect.EOF)
+    assert simulated < wall + 5, f"{simulated} simulated s in {wall:.1f} wall s"
+    reader = pexpect.spawn(str(SIMULATOR), [str(ini), "-r"], cwd=str(ROOT), timeout=30)
+    reader.expect(rb"RL: unit is read only")
+    reader.close(force=True)
