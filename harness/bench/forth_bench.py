@@ -5,8 +5,8 @@ SIMH counts instructions (SHOW TIME at a stop). CODE words MARK and END-MARK
 continue; each benchmark is a colon definition `MARK <work> END-MARK`, so the
 difference is the work alone (plus MARK's own NEXT, measured by an empty pair
 and subtracted). Each figure is printed beside the one it replaced: the kernel
-before issue 19's hashed dictionary search (4 chains per word list, the search
-order walked in FORTH), measured the same way. Each runs at processor priority 6: the stock 11/23's line clock
+before issue 19's hashed dictionary search (main at 529275f: 4 chains per word
+list by name length, the search order walked in FORTH), measured the same way. Each runs at processor priority 6: the stock 11/23's line clock
 cannot be disabled and ticks at a host-calibrated rate, so its interrupts are held
 off to keep the counts exact. Simulated seconds use the 11/23's typical 300 000
 instructions per second (docs/design.md section 2)."""
@@ -61,12 +61,12 @@ CREATE TEXT 448 ALLOT
 
 # (label, word, instructions before issue 19's hashed dictionary search)
 BENCHMARKS = [
-    ("BYTE Sieve, 10 iterations of 8190 flags", "B-SIEVE", 8945629),
-    ("10 000 empty DO LOOP passes", "B-LOOP", 60017),
-    ("recursive Fibonacci of 20", "B-FIB", 601998),
-    ("outer interpreter: EVALUATE of 64 x '1 DROP'", "B-INTERPRET", 347259),
-    ("bus error trapped and caught by CATCH", "B-TRAP", 10107),
-    ("1000 LOAD (the paper's blocks 1000-1012)", "B-LOAD", 1885787),
+    ("BYTE Sieve, 10 iterations of 8190 flags", "B-SIEVE", 9245725),
+    ("10 000 empty DO LOOP passes", "B-LOOP", 60023),
+    ("recursive Fibonacci of 20", "B-FIB", 689562),
+    ("outer interpreter: EVALUATE of 64 x '1 DROP'", "B-INTERPRET", 374960),
+    ("bus error trapped and caught by CATCH", "B-TRAP", 10123),
+    ("1000 LOAD (the paper's blocks 1000-1012)", "B-LOAD", 2075402),
 ]
 WORDS_INTERPRETED = 128
 

@@ -22,7 +22,7 @@ from harness.machine.robot import numbers
 RANGE = 5
 # (x, y, z) absolute targets in turn; t stays 0 (MaxVel 0). z moves upward
 # first: the counters are zeroed by Set.Up.Robot with z on its lower stop
-# (see test_z_is_caught_just_above_its_lower_stop).
+# (see test_z_sits_on_its_lower_stop).
 MOVES = [(1600, 0, 0), (-1600, 0, 0), (200, 0, 0), (40, 0, 0), (0, 800, 0),
          (0, -2400, 0), (0, 80, 0), (0, 0, 400), (0, 0, 2000), (0, 0, 1000),
          (0, 0, 1030), (4000, 3000, 1500), (0, 0, 200)]
@@ -99,22 +99,18 @@ def test_axes_hunt_instead_of_resting(robot):
     assert max(abs(c - 400) for c in seen) < 60
 
 
-def test_z_is_caught_just_above_its_lower_stop(boot):
+def test_z_sits_on_its_lower_stop(boot):
     """DAC 2048 at power-up and z's gravity offset (+45 codes) drop z at 880
-    counts/s: it would reach its lower stop (-4000 from power-up) 4.6 s after
-    power-up. Since issue 19's hashed dictionary search, boot and 1000 LOAD end at
-    4.48 s (measured: z at -3929, still falling); Set.Up.Robot typed with it zeroes
-    the counters at 4.50 s and the servo catches z about 54 counts above the stop
-    (it rested on the stop while 1000 LOAD took 6.4 s). So a negative z target
-    (the issue's -400) is still out of reach: z is pushed onto the stop, about 60
-    counts below its zero, and Move.Complete? never returns."""
+    counts/s: it reaches its lower stop (-4000 from power-up) 4.6 s after
+    power-up, before 1000 LOAD (10 simulated s) ends. Set.Up.Robot then zeroes
+    the counters there, so a negative z target (the issue's -400) is out of reach."""
     r = boot()
     r.send("1000 LOAD Set.Up.Robot")
     p = r.plant()
-    assert p["Z"]["stop"] == "-" and -4000 < p["Z"]["pos"] < -3900 and abs(p["Z"]["counter"]) < 20
+    assert p["Z"]["stop"] == "lower" and p["Z"]["pos"] == -4000 and p["Z"]["counter"] == 0
     out = r.begin("1600 800 -400 0 Abs.Move Move.Complete?", 20.0)
     p = r.plant()
-    assert "ok" not in out and p["Z"]["stop"] == "lower" and -100 < p["Z"]["counter"] < -20
+    assert "ok" not in out and p["Z"]["stop"] == "lower" and p["Z"]["counter"] == 0
 
 
 def test_short_moves_never_reach_max_speed(robot):
