@@ -3,6 +3,7 @@
 #   make run    the interactive FORTH console
 #   make test   the test suite (pytest, in parallel: a worker per core, plus one)
 #   make bench  benchmarks, printing their figures
+#   make help   every target, with what it does (the `## ...` after each target)
 # Each part has its own fragment in mk/; fragments add to ALL_PRODUCTS and BENCHES.
 SHELL := /bin/bash
 BUILD := build
@@ -15,20 +16,24 @@ include mk/simh.mk
 include mk/python.mk
 include $(filter-out mk/simh.mk mk/python.mk,$(wildcard mk/*.mk))
 
-all: $(ALL_PRODUCTS)
+all: $(ALL_PRODUCTS)  ## build everything: the simulator, the FORTH kernel, the disk image
 
 # One worker more than the cores: a worker waiting on a simulator's answer leaves
 # its core to another. Bytecode is cached even where the environment says not to
 # (PYTHONDONTWRITEBYTECODE), and written before the workers start, once: the
 # tests start the harness in hundreds of processes.
 TEST_WORKERS ?= $(shell echo $$(( $$(nproc) + 1 )))
-test: all venv
+test: all venv  ## the test suite (pytest, in parallel), about 25 s on an idle 2-core host
 	@env -u PYTHONDONTWRITEBYTECODE $(PY) -m compileall -q harness tests > /dev/null
 	@env -u PYTHONDONTWRITEBYTECODE $(PY) -m pytest -q -rs -n $(TEST_WORKERS) --dist loadscope tests
 
-bench: all venv $(BENCHES)
+bench: all venv $(BENCHES)  ## every benchmark below, printing its figures
 
-clean:
+help:  ## this list
+	@grep -hE '^[a-z][a-z0-9-]*:.*## ' $(MAKEFILE_LIST) | \
+	  sed -E 's/^([a-z0-9-]+):.*## /\1\t/' | awk -F'\t' '{ printf "  make %-20s %s\n", $$1, $$2 }'
+
+clean:  ## remove build/ (local/ and your working disk stay)
 	rm -rf $(BUILD)
 
-.PHONY: all test bench clean run
+.PHONY: all test bench clean run help

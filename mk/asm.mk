@@ -3,7 +3,7 @@
 # the references). pdpy11, the other reference, is pinned in requirements.txt.
 ALL_PRODUCTS += $(BUILD)/pdp11-stock asm-gforth
 
-asm-gforth:
+asm-gforth:  ## install gforth, the host assembler the encoding checks use
 	@bash mk/apt-need.sh gforth
 
 .PHONY: asm-gforth

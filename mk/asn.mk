@@ -6,10 +6,10 @@
 #                    every step; figures in docs/img/asn-*.png
 #   make bench-asn   one learning step's cost: instructions, KDF11-A time
 #                    (part of make bench)
-asn-runs: $(BUILD)/kernel.lda $(BUILD)/pdp11 $(BUILD)/robot.dsk venv
+asn-runs: $(BUILD)/kernel.lda $(BUILD)/pdp11 $(BUILD)/robot.dsk venv  ## the ASN learning 50 trials (and controls), its figures (docs/learning.md)
 	@$(PY) -m harness.figures.asn_runs $(BUILD)/asn --figures docs/img
 
-bench-asn: $(BUILD)/kernel.lda $(BUILD)/pdp11 $(BUILD)/robot.dsk venv
+bench-asn: $(BUILD)/kernel.lda $(BUILD)/pdp11 $(BUILD)/robot.dsk venv  ## one ASN learning step's cost: instructions, KDF11-A time
 	@$(PY) -m harness.bench.asn_bench
 
 BENCHES += bench-asn

@@ -4,10 +4,10 @@
 #   make continuation-runs    the traces behind docs/continuation.md, in
 #                             build/continuation/ (printed servo, and block 1030),
 #                             and its figures, in docs/img/continuation-*.png
-bench-continuation: $(BUILD)/kernel.lda $(BUILD)/pdp11 $(BUILD)/robot.dsk venv
+bench-continuation: $(BUILD)/kernel.lda $(BUILD)/pdp11 $(BUILD)/robot.dsk venv  ## Interrupt.Path's KDF11-A cost per tick (docs/continuation.md)
 	@$(PY) -m harness.bench.continuation_bench
 
-continuation-runs: $(BUILD)/kernel.lda $(BUILD)/pdp11 $(BUILD)/robot.dsk venv
+continuation-runs: $(BUILD)/kernel.lda $(BUILD)/pdp11 $(BUILD)/robot.dsk venv  ## the continuation's traces, measurements and figures
 	@$(PY) -m harness.figures.continuation_runs $(BUILD)/continuation --figures docs/img
 
 BENCHES += bench-continuation

@@ -81,7 +81,7 @@ $(BUILD)/gripper_test: tests/devices/gripper_test.c $(DEV_OBJ)/plant/gripper.o
 # pdp11-stock too: the reference the benchmark and tests/test_simh_stock.py use.
 ALL_PRODUCTS += $(BUILD)/pdp11 $(BUILD)/pdp11-plain $(BUILD)/pdp11-timed $(BUILD)/plant_test $(BUILD)/gripper_test $(BUILD)/pdp11-stock
 
-bench-devices: $(BUILD)/pdp11 $(BUILD)/pdp11-plain $(BUILD)/pdp11-guided $(BUILD)/pdp11-stock $(BUILD)/kernel.lda $(PRISTINE_DSK) venv
+bench-devices: $(BUILD)/pdp11 $(BUILD)/pdp11-plain $(BUILD)/pdp11-guided $(BUILD)/pdp11-stock $(BUILD)/kernel.lda $(PRISTINE_DSK) venv  ## the C devices' cost: plain, guided and stock builds
 	@$(PY) -m harness.bench.bench_devices
 BENCHES += bench-devices
 .PHONY: bench-devices

@@ -4,7 +4,7 @@
 #                                 FLUSH); prints lost and corrupted blocks (both
 #                                 must be 0; exit 1 otherwise). tests/disk runs 10.
 CYCLES ?= 100
-soak-disk: $(BUILD)/pdp11 $(BUILD)/kernel.lda $(BUILD)/robot.dsk venv
+soak-disk: $(BUILD)/pdp11 $(BUILD)/kernel.lda $(BUILD)/robot.dsk venv  ## write, kill -9 during FLUSH, reread, CYCLES times: lost blocks (not in make test)
 	@$(PY) -m harness.soak.disk_soak $(CYCLES)
 
 .PHONY: soak-disk

@@ -24,12 +24,12 @@ $(WORK_DSK): | $(PRISTINE_DSK)
 	@echo "==> working disk $@ created from $(PRISTINE_DSK) (make never overwrites it)"
 
 IMAGE ?= $(WORK_DSK)
-export-blocks: | $(VENV)/.stamp
+export-blocks: | $(VENV)/.stamp  ## blocks of IMAGE (default your working disk) to blocks/*.txt (FROM, TO, FORCE)
 	@$(PY) -m harness disk export $(IMAGE) blocks \
 	  $(if $(FROM),--from $(FROM)) $(if $(TO),--to $(TO)) $(if $(FORCE),--force)
 
-disk: $(PRISTINE_DSK)
-work-disk: $(WORK_DSK)
+disk: $(PRISTINE_DSK)  ## the pristine disk image build/robot.dsk from blocks/
+work-disk: $(WORK_DSK)  ## your working disk local/robot.dsk (made once, never overwritten)
 
 ALL_PRODUCTS += $(PRISTINE_DSK)
 .PHONY: export-blocks disk work-disk

@@ -31,9 +31,9 @@ $(BUILD)/robot.ini: mk/forth.mk pdp11-devices/machine.ini
 	  "attach %1 rl0 $(ROBOT_DISK)" \
 	  "load $(BUILD)/kernel.lda" "go" > $@
 
-kernel: $(BUILD)/kernel.lda $(BUILD)/kernel.map
+kernel: $(BUILD)/kernel.lda $(BUILD)/kernel.map  ## the FORTH kernel (gforth metacompiler): build/kernel.lda and .map
 
-bench-forth: $(BUILD)/kernel.lda $(PDP11_SIM) venv
+bench-forth: $(BUILD)/kernel.lda $(PDP11_SIM) venv  ## the FORTH kernel's speed figures
 	@$(PY) -m harness.bench.forth_bench
 
 ALL_PRODUCTS += $(BUILD)/kernel.lda $(BUILD)/kernel.map $(BUILD)/robot.ini

@@ -19,12 +19,12 @@ FUZZ_MESSAGES ?= 50000
 PASTE_NEEDS := $(BUILD)/pdp11 $(BUILD)/kernel.lda $(BUILD)/kernel.map $(BUILD)/robot.dsk \
                lab-assets venv
 
-fuzz: $(PASTE_NEEDS)
+fuzz: $(PASTE_NEEDS)  ## the long input checks: FUZZ_LINES random console lines, two writers, pastes, lab messages
 	@$(PY) -m harness.fuzz.console_fuzz --lines $(FUZZ_LINES) --seed $(FUZZ_SEED)
 	@$(PY) -m harness.fuzz.paste_runs fuzz
 	@$(PY) -m harness.fuzz.protocol_fuzz --messages $(FUZZ_MESSAGES) --seed $(FUZZ_SEED)
 
-bench-paste: $(PASTE_NEEDS)
+bench-paste: $(PASTE_NEEDS)  ## a 20 000-character paste's wall time at both paces
 	@$(PY) -m harness.fuzz.paste_runs bench
 BENCHES += bench-paste
 

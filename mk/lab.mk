@@ -18,21 +18,21 @@ $(LAB_STAMP): harness/lab/package.json harness/lab/package-lock.json
 	@cd $(LAB_DIR) && npm ci --no-audit --no-fund --loglevel=error
 	@touch $@
 
-lab-assets: $(LAB_STAMP)
+lab-assets: $(LAB_STAMP)  ## the lab page's pinned npm libraries (npm ci into build/lab)
 ALL_PRODUCTS += $(LAB_STAMP)
 
-lab: $(LAB_NEEDS) $(WORK_DSK)
+lab: $(LAB_NEEDS) $(WORK_DSK)  ## the lab bench in a browser (SPEED=full PORT=8100): prints its URL
 	@$(PY) -m harness lab $(if $(PORT),--port $(PORT)) $(if $(SPEED),--speed $(SPEED))
 
 # The browser tests skip, saying why, only where these cannot be installed.
-lab-browser:
+lab-browser:  ## install Debian's chromium and chromium-driver for the lab's tests
 	@bash mk/apt-need.sh chromium chromium-driver || echo "==> chromium could not be installed: the browser tests will skip"
 test: lab-browser
 
-test-lab-long: $(LAB_NEEDS) $(PRISTINE_DSK) lab-browser
+test-lab-long: $(LAB_NEEDS) $(PRISTINE_DSK) lab-browser  ## the long lab browser session (not in make test)
 	@LAB_LONG=1 $(PY) -m pytest -q tests/lab/test_long_session.py
 
-bench-lab: $(LAB_NEEDS) $(PRISTINE_DSK) lab-browser
+bench-lab: $(LAB_NEEDS) $(PRISTINE_DSK) lab-browser  ## the lab's cost: CPU at real pace, instruction rate at full speed
 	@$(PY) -m harness.bench.lab_bench
 BENCHES += bench-lab
 .PHONY: lab lab-assets lab-browser test-lab-long bench-lab

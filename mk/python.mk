@@ -9,5 +9,5 @@ $(VENV)/.stamp: requirements.txt
 	@$(VENV)/bin/pip install -q --disable-pip-version-check -r requirements.txt
 	@touch $@
 
-venv: $(VENV)/.stamp
+venv: $(VENV)/.stamp  ## the pinned Python environment .venv (requirements.txt)
 .PHONY: venv

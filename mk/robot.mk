@@ -4,10 +4,10 @@
 #   make servo-runs    the traces behind docs/servo.md, in build/servo/ (printed
 #                      blocks, and with the proposed block 1030), and its figures,
 #                      docs/img/{printed,ramp}-*.png
-bench-robot: $(BUILD)/kernel.lda $(BUILD)/pdp11 $(BUILD)/robot.dsk venv
+bench-robot: $(BUILD)/kernel.lda $(BUILD)/pdp11 $(BUILD)/robot.dsk venv  ## the servo's cost per tick on the KDF11-A
 	@$(PY) -m harness.bench.robot_bench
 
-servo-runs: $(BUILD)/kernel.lda $(BUILD)/pdp11 $(BUILD)/robot.dsk venv
+servo-runs: $(BUILD)/kernel.lda $(BUILD)/pdp11 $(BUILD)/robot.dsk venv  ## the 1983 servo's traces and figures (docs/servo.md)
 	@$(PY) -m harness.figures.servo_runs $(BUILD)/servo/printed --figures docs/img/printed
 	@$(PY) -m harness.figures.servo_runs $(BUILD)/servo/ramp --block 1030 --then Ramp.Servo \
 	    --figures docs/img/ramp

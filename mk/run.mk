@@ -5,5 +5,5 @@
 #   make run FAST=1      full speed while the FORTH works, the 11/23's pace while it waits for a key
 #   make run TRACE=f.csv record the plant trace
 #   make run TIMED=1     11/23 time: each instruction its KDF11-A time (SET CLK TIMED)
-run: $(BUILD)/pdp11 $(BUILD)/pdp11-timed $(BUILD)/kernel.lda $(BUILD)/kernel.map $(WORK_DSK) venv
+run: $(BUILD)/pdp11 $(BUILD)/pdp11-timed $(BUILD)/kernel.lda $(BUILD)/kernel.map $(WORK_DSK) venv  ## the interactive FORTH console on your working disk
 	@$(PY) -m harness console $(if $(FAST),--fast) $(if $(TRACE),--trace $(TRACE)) $(if $(TIMED),--timed)

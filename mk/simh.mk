@@ -34,5 +34,5 @@ $(BUILD)/pdp11-stock: $(STOCK_OBJS)
 	@echo "==> linking SIMH's stock PDP-11 simulator: $@"
 	@$(CC) -o $@ $^ $(SIMH_LIBS)
 
-simh-source: $(SIMH_STAMP)
+simh-source: $(SIMH_STAMP)  ## fetch SIMH 3.8.1's source (Debian's source package)
 .PHONY: simh-source

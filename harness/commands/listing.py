@@ -7,6 +7,7 @@ from pathlib import Path
 
 from harness.analysis.listing import (PRISTINE, ListingError, format_ranges, listable_blocks,
                                       make_listing)
+from harness.commands.invoke import PROG
 from harness.machine import simh
 from harness.machine.kernel_layout import KernelMapError
 
@@ -26,6 +27,8 @@ Examples:
   python -m harness listing --blocks 1008        the interrupt servo's block
   python -m harness listing --blocks 1002-1003 --out stop.lst
   python -m harness listing --blocks 1030-1031   the proposed ramp (after 1000 LOAD)
+  python -m harness listing --disk local/robot.dsk --blocks 1100
+                                                 your own block, on your disk
 
 Machine code names its operands: MOV Desire.Pos(R1),R2, MOV R0,@#CntOut (the
 constant the source used; the I/O register follows as a comment). A bad --blocks
@@ -33,23 +36,27 @@ is a usage error (exit status 2)."""
 
 
 def block_range(text):
-    """--blocks N or N-M (argparse type): N and M are blocks the disk image holds
-    (blank blocks between them are skipped)."""
+    """--blocks N or N-M (argparse type); whether the disk holds them is checked
+    once --disk is known (blocks_refusal)."""
     try:
         first, _, last = text.partition("-")
-        first, last = int(first), int(last or first)
+        return int(first), int(last or first)
     except ValueError:
         raise argparse.ArgumentTypeError(f"{text!r}: expected N or N-M") from None
+
+
+def blocks_refusal(blocks, disk):
+    """None, or why --blocks cannot be listed from `disk`: N and M must be blocks
+    the image holds (blank blocks between them are skipped)."""
+    first, last = blocks
     try:
-        present = listable_blocks(PRISTINE.read_bytes())
+        present = listable_blocks(Path(disk).read_bytes())
     except OSError as err:
-        raise argparse.ArgumentTypeError(f"cannot read {PRISTINE}: {err.strerror} "
-                                         "(run make)") from None
+        return f"cannot read {disk}: {err.strerror}" + (" (run make)" if disk == PRISTINE else "")
     if first > last or first not in present or last not in present:
-        raise argparse.ArgumentTypeError(
-            f"{text}: list blocks that {PRISTINE.name} holds, in increasing order: "
-            f"{format_ranges(present)}")
-    return first, last
+        return (f"{first}-{last}: list blocks that {Path(disk).name} holds, in increasing "
+                f"order: {format_ranges(present)}")
+    return None
 
 
 def configure(parser):
@@ -60,13 +67,22 @@ def configure(parser):
     parser.add_argument("--load", type=int, action="append", default=[], metavar="N",
                         help="a block to LOAD after 1000 and before the listed ones "
                         "(repeatable), e.g. --load 1040 for 1060's demonstrations")
+    parser.add_argument("--disk", default=PRISTINE, type=Path, metavar="IMAGE",
+                        help="list the blocks of this RL02 image, e.g. your own local/robot.dsk "
+                        "(default: build/robot.dsk, the pristine disk); a copy is loaded, the "
+                        "image is only read")
     parser.add_argument("--out", metavar="FILE", help="write the listing here (default: stdout)")
-    parser.set_defaults(run=run)
+    parser.set_defaults(run=run, usage=parser.format_usage)
 
 
 def run(args):
+    why = blocks_refusal(args.blocks, args.disk)
+    if why:                                   # a usage error, as argparse reports one
+        print(args.usage(), end="", file=sys.stderr)
+        print(f"{PROG} listing: error: argument --blocks: {why}", file=sys.stderr)
+        return 2
     first, last = args.blocks
-    text = make_listing(first, last, first_load=args.load).format() + "\n"
+    text = make_listing(first, last, image=args.disk, first_load=args.load).format() + "\n"
     if not args.out:
         sys.stdout.write(text)
         return 0

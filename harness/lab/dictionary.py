@@ -38,19 +38,26 @@ def header_name(memory, lfa):
     return bytes(chars).decode("latin-1"), count
 
 
-def find_bodies(memory, vocabulary_body, names):
-    """{name: body address} for each of `names` found (newest definition, case
-    ignored as the FORTH's own lookup does) in the vocabulary's chains."""
-    wanted = {n.upper(): n for n in names}
-    found = {}
+def headers(memory, vocabulary_body):
+    """(lfa, name, count byte) of each header in the vocabulary's chains,
+    newest first in each chain, as far as `memory` holds them."""
     for chain in range(CHAINS):
         lfa, steps = memory.word(vocabulary_body + 2 * chain), 0
         while lfa and steps < MAX_HEADERS:
             name, count = header_name(memory, lfa)
             if name is None:
                 break
-            key = name.upper()
-            if key in wanted and wanted[key] not in found and not count & SMUDGE:
-                found[wanted[key]] = body_of(lfa, count & LENGTH)
+            yield lfa, name, count
             lfa, steps = memory.word(lfa), steps + 1
+
+
+def find_bodies(memory, vocabulary_body, names):
+    """{name: body address} for each of `names` found (newest definition, case
+    ignored as the FORTH's own lookup does) in the vocabulary's chains."""
+    wanted = {n.upper(): n for n in names}
+    found = {}
+    for lfa, name, count in headers(memory, vocabulary_body):
+        key = name.upper()
+        if key in wanted and wanted[key] not in found and not count & SMUDGE:
+            found[wanted[key]] = body_of(lfa, count & LENGTH)
     return found

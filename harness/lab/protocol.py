@@ -39,13 +39,17 @@ FROM_PAGE = {
     "pause": {},
     "run": {},
     "step": {},
+    "break": {"word": Rule(str, 31)},            # a breakpoint on a FORTH word (breakpoints.py)
+    "nobreak": {},
 }
 
 TO_PAGE = {
     "hello": {"stops": dict, "plant": dict, "per_axis": list, "single": list, "status": dict,
               "con": str, "keyboard": dict},
     "con": {"d": str},                                   # console output
-    "data": {"rows": list, "status": dict, "servo": dict},
+    "data": {"rows": list, "status": dict, "servo": dict,
+             "panel": Rule(dict, nullable=True)},         # the 11/23's front panel
+    "history": {"rows": list},                           # the instructions before a breakpoint
     "keyboard": {"holder": Rule(str, nullable=True), "you": bool},
     "input": {"waiting": int, "room": int},              # answer to `key`: the queue
     "error": {"why": str},
@@ -98,3 +102,45 @@ def parse(text):
     except (ValueError, RecursionError) as err:
         raise Refused(f"not JSON ({str(err)[:60]})") from None
     return check(message), message
+
+
+# ---- the LAB device (pdp11-devices/lab/lab.c): the server's side of its FIFOs -------
+# Commands the server writes to LAB's command FIFO, one a line: name -> its arguments
+# as the device's help names them. lab.c answers an unknown command with
+# "E,commands: ..." built from the same list (tests/lab/test_lab_device.py holds
+# the two together, and the header comment of lab.c with them).
+DEVICE_COMMANDS = {
+    "speed": "X",             # pace at X times the 11/23's; 0 = full speed
+    "pause": "",              # stop simulated time at the next tick
+    "run": "",                # go on
+    "step": "",               # one tick more, then pause
+    "watch": "ADDR...",       # octal even addresses below 160000, at most 64
+    "dump": "ADDR N",         # N words from octal ADDR
+    "power": "on|off",        # the amplifier rack's switch (SET PLANT POWER)
+    "panel": "[ADDR...|off]", # R rows: the 11/23's front panel (front_panel.py)
+}
+
+# Rows the device writes, one a line: kind -> its fields (a trailing "..." repeats).
+DEVICE_ROWS = {
+    "W": ("time_s", "tick", "w0", "..."),          # every reported tick: watched words
+    "P": ("time_s", "axis", "..."),                # the plant trace's row (plant_rows.COLUMNS)
+    "A": ("a0", "..."),                            # the watched addresses (octal)
+    "S": ("time_s", "state", "speed", "power"),    # after every command
+    "M": ("addr", "w0", "..."),                    # a dump, up to 64 words a row
+    "R": ("time_s", "r0", "..."),                  # the front panel (front_panel.py)
+    "E": ("what",),                                # a refused command
+}
+
+
+def device_help():
+    """The list lab.c's refusal of an unknown command gives."""
+    return ", ".join(f"{name} {args}".rstrip() for name, args in DEVICE_COMMANDS.items())
+
+
+def device_command(text):
+    """`text` when its first word is one of the LAB device's commands; else Refused
+    (the server never writes a line the device would only refuse)."""
+    name = text.split(" ", 1)[0]
+    if name not in DEVICE_COMMANDS:
+        raise Refused(f"the LAB device has no command {name!r} (commands: {device_help()})")
+    return text

@@ -18,12 +18,15 @@ from pathlib import Path
 
 from aiohttp import WSMsgType, web
 
-from harness.lab import guard, protocol, shell_terminal
+from harness.lab import breakpoints, guard, protocol, shell_terminal
 from harness.lab.feed import plant_row, thin, words_of
+from harness.lab.front_panel import PANEL_WORDS, WordIndex, panel
+from harness.lab.rack_hint import RackHint
 from harness.lab.servo_watch import PER_AXIS, SINGLE, ServoWatch
 from harness.lab.session import SPEEDS, Simulator
 from harness.machine.build import BUILD
 from harness.machine.console_session import quiet_stdout
+from harness.machine.kernel_layout import BODY
 
 STATIC = Path(__file__).resolve().parent / "static"
 NODE_MODULES = BUILD / "lab" / "node_modules"
@@ -50,6 +53,12 @@ class Lab:
                              speed, page=self.to_pages, read_only=read_only)
         self.shell_echo = None           # the shell's terminal, when it types too
         self.watch = ServoWatch(symbols)
+        self.rack_hint = RackHint()
+        self.words = WordIndex({address: name for name, address in symbols.items()})
+        self.panel_command = "panel " + " ".join(f"{symbols[name] + BODY:o}"
+                                                 for name in PANEL_WORDS)
+        self.panel = None                # the 11/23's front panel (front_panel.py)
+        self._console_tail = b""
         self.pages = {}                  # websocket -> its name ("page 3")
         self.opened = 0
         self.holder = None               # who holds the keyboard: a websocket, SHELL, None
@@ -67,6 +76,29 @@ class Lab:
         if self.shell_echo:
             self.shell_echo(data)
         self.to_pages(data)
+        self._console_tail = (self._console_tail + data)[-64:]
+        if breakpoints.HIT.search(self._console_tail):       # a breakpoint was hit
+            self._console_tail = b""
+            asyncio.ensure_future(self.show_history())
+
+    async def show_history(self):
+        """The instructions before a breakpoint, each with its word, to the pages."""
+        text = await self._at_sim([f"show cpu history={breakpoints.SHOWN}"])
+        self.broadcast({"t": "history", "rows": breakpoints.named_history(text, self.words)})
+
+    async def set_break(self, word):
+        lines, said = breakpoints.break_lines(self.words, word)
+        self.on_console(f"\r\n[lab] {said}\r\n".encode())
+        if lines:
+            await self._at_sim(lines)
+
+    async def _at_sim(self, lines):
+        try:
+            return await self.sim.simh_lines(lines)
+        except asyncio.TimeoutError:                  # paused by the page: SIMH waits
+            self.on_console(b"\r\n[lab] SIMH did not come to its prompt (paused? Run "
+                            b"first)\r\n")
+            return ""
 
     def to_pages(self, data):
         self.scrollback += data
@@ -82,11 +114,17 @@ class Lab:
         elif row.kind == "W":
             self.status["time"], self.status["tick"], words = words_of(row)
             self.servo = self.watch.values(words)
+            hint = self.rack_hint.update(self.status["power"], self.status["time"], self.servo)
+            if hint:
+                self.on_console(f"\r\n{hint}\r\n".encode())
         elif row.kind == "M":
             for command in self.watch.on_memory(*words_of(row)):
                 self.sim.command(command)
         elif row.kind == "A":
             self.watch.on_addresses([int(a, 8) for a in row.fields])
+            self.words.learn(self.watch.memory, self.watch.vocabulary)   # a fresh dictionary
+        elif row.kind == "R":
+            self.panel = panel(row.fields, self.words)
         elif row.kind == "S":
             self.status["time"] = float(row.fields[0])
             self.status["state"] = row.fields[1]
@@ -162,8 +200,10 @@ class Lab:
             return
         self.typed(data)
 
-    def typed(self, data):
-        for note in self.sim.keys(data):
+    def typed(self, data, page=False):
+        """Keys from the shell (the full SIMH console) or a page (through the guard
+        of the page's sim>: session.page_keys)."""
+        for note in (self.sim.page_keys(data) if page else self.sim.keys(data)):
             self.note(note)
 
     async def frames(self):
@@ -171,13 +211,15 @@ class Lab:
             await asyncio.sleep(frame_interval(self.status["speed"]))
             rows, self.rows = thin(self.rows, ROWS_PER_FRAME), []
             self.status["waiting"] = self.sim.waiting()
-            state = json.dumps([self.status, self.servo])
+            self.status["prompt"] = self.sim.watcher.at_simh     # SIMH's sim>: stopped
+            state = json.dumps([self.status, self.servo, self.panel])
             if self.pages and news(rows, state, self.sent):
                 self.broadcast({"t": "data", "rows": rows, "status": self.status,
-                                "servo": self.servo})
+                                "servo": self.servo, "panel": self.panel})
                 self.sent = state
 
     async def probes(self):
+        self.sim.command(self.panel_command)     # R rows from now on
         while not self.done.is_set():
             for command in self.watch.probe():
                 self.sim.command(command)
@@ -202,7 +244,7 @@ class Lab:
         if len(data) > room and data.strip(b"\x03\x05"):      # ^C and ^E always go
             raise protocol.Refused(f"the input queue is full ({self.sim.waiting()} characters "
                                    f"waiting, room for {room}): send again later")
-        self.typed(data)
+        self.typed(data, page=True)
         self.tell(ws, {"t": "input", "waiting": self.sim.waiting(), "room": self.sim.room()})
 
     def on_take(self, ws, message):
@@ -223,6 +265,20 @@ class Lab:
 
     def on_step(self, ws, message):
         self.sim.command("step")
+
+    def on_break(self, ws, message):     # a breakpoint on a FORTH word (breakpoints.py)
+        self.must_hold(ws)
+        asyncio.ensure_future(self.set_break(message["word"]))
+
+    def on_nobreak(self, ws, message):
+        self.must_hold(ws)
+        asyncio.ensure_future(self._at_sim(breakpoints.clear_lines()))
+
+    def must_hold(self, ws):
+        """Breakpoints are typed at sim>: only by the keyboard's holder."""
+        if not self.may_type(ws):
+            raise protocol.Refused(f"{self.holder_name()} holds the keyboard: "
+                                   "take it to set breakpoints here")
 
 
 def frame_interval(speed):

@@ -23,12 +23,15 @@ from pathlib import Path
 import pexpect
 
 from harness.lab.feed import Lines, lab_row
+from harness.lab.sim_prompt_guard import SimPromptGuard, prompt_termios
+from harness.lab.protocol import device_command
 from harness.machine import plant_rows, simh
 from harness.machine.build import KERNEL, ROOT
 from harness.machine.console_session import (RACK_OFF, bye_halt, leave, say,
                                              simh_exit_report)
-from harness.machine.console_watch import Leave, LineWatcher
+from harness.machine.console_watch import SIM_PROMPT, Leave, LineWatcher
 from harness.machine.key_feed import KeyFeed, shown
+from harness.machine.simh_command import RUNS, simh_command
 
 SPEEDS = {"real": 1, "x10": 10, "full": 0}
 READ_CHUNK = 1 << 16
@@ -84,6 +87,10 @@ class Simulator:
         self.watcher = LineWatcher(bye_halt(KERNEL))
         self.feed = None
         self.keys_waiting = None
+        self.guard = SimPromptGuard(self.watcher)     # the page's keys pass through it
+        self.prompted = asyncio.Event()              # SIMH printed its prompt (simh_lines)
+        self.capture = None                          # what SIMH prints, while simh_lines reads it
+        self._tail = b""
         self.child = None
         self.fds = {}
         self.leaving = False
@@ -104,7 +111,8 @@ class Simulator:
         ini.write_text(boot_script(self.disk, lab_fifo, SPEEDS[self.speed],
                                    read_only=self.read_only))
         self.child = pexpect.spawn(str(self.simulator), [str(ini)], timeout=None,
-                                   dimensions=(24, 80), cwd=str(ROOT))
+                                   dimensions=(24, 80), cwd=str(ROOT),
+                                   preexec_fn=prompt_termios)
         self.child.delaybeforesend = None
         self.feed = KeyFeed(self.child.child_fd, self.child.pid, limit=QUEUE_LIMIT)
         self.keys_waiting = asyncio.Event()
@@ -122,6 +130,12 @@ class Simulator:
         self.fds["pty"] = self.child.child_fd
 
         def read_console(data):
+            at_prompt = self.watcher.at_simh
+            if self.capture is not None:
+                self.capture += data
+            self._tail = (self._tail + data)[-len(SIM_PROMPT):]
+            if self._tail == SIM_PROMPT:
+                self.prompted.set()
             try:
                 self.watcher.output(data)         # is SIMH's sim> up? the BYE word's halt?
                 self.feed.output(data)            # booted yet?
@@ -132,6 +146,8 @@ class Simulator:
                 return
             console(shown(data))
             self.keys_waiting.set()               # what waited for the boot may go
+            if self.watcher.at_simh and not at_prompt:
+                self.page_keys(b"")               # the page's keys that waited for sim>
         self._watch(loop, "pty", read_console)
 
     def _watch(self, loop, name, handle):
@@ -164,10 +180,39 @@ class Simulator:
 
     # ---- from the page ------------------------------------------------------------
     def keys(self, data):
-        """What the user typed; notes for the user (what ^C dropped). A way out
-        (BYE, ^D, ^C at sim>: harness/machine/console_watch.py) starts
-        leaving, as the console does."""
+        """What the lab's own shell typed: the full SIMH console. Notes for the user
+        (what ^C dropped). A way out (BYE, ^D, ^C at sim>:
+        harness/machine/console_watch.py) starts leaving, as the console does. At
+        sim> an Enter (CR) goes as the LF that ends a line there (prompt_termios)."""
+        notes, start = [], 0
+        for i, byte in enumerate(data):
+            if byte == 13 and self.watcher.at_simh:
+                notes += self._typed(data[start:i] + b"\n")
+                start = i + 1
+        return notes + self._typed(data[start:])
+
+    def page_keys(self, data):
+        """What the page typed: through the guard (harness/lab/sim_prompt_guard.py),
+        which lets only the page's commands reach sim>; notes for the user."""
         if self.leaving or self.feed is None:
+            return []
+        notes = []
+        try:
+            while True:
+                for kind, payload in self.guard.keys(data):
+                    if kind == "page":
+                        self.page(payload)
+                    else:
+                        notes += self._typed(payload)
+                data = b""
+                if not self.guard.more():        # a checked sim> line went: the rest now
+                    return notes
+        except Leave as way:
+            self._way_out(way)
+            return notes
+
+    def _typed(self, data):
+        if self.leaving or self.feed is None or not data:
             return []
         try:
             notes = self.feed.typed(data, self.watcher)
@@ -176,6 +221,28 @@ class Simulator:
             return []
         self.keys_waiting.set()
         return notes
+
+    async def simh_lines(self, lines, wait_s=10):
+        """Type `lines` at sim> as the page would (through the guard), after a ^E
+        when the machine runs; a line that runs the machine (CONT) ends the list.
+        What SIMH printed for the last line answered at its prompt."""
+        if self.leaving or self.child is None:
+            return ""
+        if not self.watcher.at_simh:
+            self.prompted.clear()
+            self.page_keys(b"\x05")
+            await asyncio.wait_for(self.prompted.wait(), wait_s)
+        answer = ""
+        for line in lines:
+            self.prompted.clear()
+            self.capture = bytearray()
+            self.page_keys(line.encode() + b"\r")
+            if simh_command(line) in RUNS:
+                break
+            await asyncio.wait_for(self.prompted.wait(), wait_s)
+            answer = self.capture.decode("latin-1")
+        self.capture = None
+        return answer
 
     def room(self):
         return self.feed.room() if self.feed else 0
@@ -208,7 +275,8 @@ class Simulator:
         asyncio.get_running_loop().create_task(self.close(way.how))
 
     def command(self, text):
-        """A line to the LAB device (speed X, pause, run, step, watch, dump)."""
+        """A line to the LAB device (protocol.DEVICE_COMMANDS; another is Refused)."""
+        device_command(text)
         try:
             os.write(self.ctl, text.encode() + b"\n")
         except BlockingIOError:

@@ -151,11 +151,14 @@ def bye_halt(kernel=KERNEL):
 
 def _to_forth_prompt(child, gone, busy_wait):
     """Bring the FORTH to its prompt; 0 at the prompt, 2 no answer, 3 exited."""
-    child.send(CTRL_U + b"\r")                   # an empty line: who answers?
+    child.send(CTRL_U + b"\r\n")                # an empty line: who answers? (the FORTH
+                                                 # takes CR LF as one line end; sim> may end lines on LF only)
     i = child.expect([b" ok\r\n", b"sim> ", pexpect.TIMEOUT, pexpect.EOF,
                       b" compiled\r\n"], timeout=busy_wait)
     if i == 1:                                   # SIMH had the machine stopped
-        child.send(b"cont\r")
+        child.send(b"nobreak all\n")             # a breakpoint would stop it again
+        child.expect(b"sim> ", timeout=15)
+        child.send(b"cont\n")
         return probe_prompt(child)
     if i == 4:                                   # FLUSH typed now would be compiled
         gone.notes.append("A definition was still open: ^C discarded it so that "
@@ -187,7 +190,7 @@ def _flush(child):
 
 
 def _simh(child, command):
-    child.send(command.encode() + b"\r")
+    child.send(command.encode() + b"\n")          # LF ends a sim> line on any terminal
     child.expect(b"sim> ", timeout=15)
     return child.before.decode("latin-1")
 

@@ -47,10 +47,15 @@ def parse_show_gripper(text):
     """SHOW PLANT's (last) gripper line -> {opening (in), steps, object (in),
     contact, pulses, missed, blocked, part}: part is None, or (x, y, z) in
     counts where a placed part is."""
-    lines = [ln for ln in text.splitlines() if ln.strip().startswith("gripper ")]
-    if not lines:
+    lines = text.splitlines()
+    starts = [i for i, ln in enumerate(lines) if ln.strip().startswith("gripper ")]
+    if not starts:
         raise ValueError(f"no gripper line in SHOW PLANT's output: {text[-200:]!r}")
-    line, _, part = lines[-1].partition(", part at ")
+    first = starts[-1]              # the gripper's lines: its first and those indented under it
+    last = next((i for i in range(first + 1, len(lines))
+                 if not lines[i].startswith("           ")), len(lines))
+    joined = " ".join(ln.strip() for ln in lines[first:last])
+    line, _, part = joined.partition(", part at ")
     f = line.replace(",", " ").replace("(", " ").split()
     return dict(opening=float(f[2]), steps=int(f[4]), object=float(f[7]), contact=int(f[10]),
                 pulses=int(f[12]), missed=int(f[14]), blocked=int(f[16]),

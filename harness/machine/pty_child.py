@@ -27,10 +27,10 @@ def quit_simh(child, timeout=15):
     which the caller has reported or does not own), QUIT -F; waits for the exit.
     The refusal line, or None."""
     refused = LEAVE_REFUSED if child.encoding else LEAVE_REFUSED.encode()
-    child.send("quit\r" if child.encoding else b"quit\r")
+    child.send("quit\n" if child.encoding else b"quit\n")      # LF ends a sim> line on any terminal
     if child.expect([pexpect.EOF, re.compile(refused)], timeout=timeout) == 0:
         return None
     line = child.match.group(0)
-    child.send("quit -f\r" if child.encoding else b"quit -f\r")
+    child.send("quit -f\n" if child.encoding else b"quit -f\n")
     child.expect(pexpect.EOF, timeout=timeout)
     return line

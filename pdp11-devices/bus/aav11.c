@@ -12,7 +12,7 @@
 #define IOBA_AAV  (IOPAGEBASE + 010440)         /* 170440 */
 #define CODE_MASK 07777
 
-static int32 dac[PLANT_AXES];
+static uint16 dac[PLANT_AXES];         /* uint16: the REG table (12-bit BRDATA) steps by 2 bytes */
 
 static t_stat aav_rd (int32 *data, int32 PA, int32 access);
 static t_stat aav_wr (int32 data, int32 PA, int32 access);

@@ -21,7 +21,18 @@
                                state run|pause, the amplifier rack on|off
                                (PLANT POWER), after every command
      M,addr,w0,...             memory (addr octal, up to 64 words a row): a dump
-   Commands, one per line:
+     R,time_s,r0,...,r7,psw,(r4),lks,csr,outbuf,dac0,...,dac3,m0,...
+                               the front panel, at every reported tick once
+                               `panel` asked for it, all octal: the registers
+                               (the current set, r7 = PC), the PSW, the word
+                               R4 (the FORTH's IP) points at, the KW11-L's LKS,
+                               the DRV11's CSR and OUTBUF, the AAV11-A's four
+                               DACs (read through their SIMH register tables),
+                               then the words at the panel's addresses
+     E,what                    a command refused, and why
+   Commands, one per line (harness/lab/protocol.py's DEVICE_COMMANDS is the
+   server's copy of this list and of the rows above; tests/lab/test_lab_device.py
+   holds the three together):
      speed X     pace at X times the 11/23's (RATE instructions per wall
                  second), 0 < X <= 1000; 0 = full speed (the power-up setting)
      pause       stop simulated time at the next tick (the plant stops with it)
@@ -31,7 +42,9 @@
      dump a n    n words from octal address a (at most 28672)
      power on|off  the amplifier rack's switch (SET PLANT POWER), between
                  two ticks like every command
-   A bad command is answered by a row "E,what" and changes nothing.
+     panel [a...]  R rows from now on, with the words at octal addresses a...
+                 (at most 8; the lab gives BLK and >IN); `panel off` stops them
+   A bad command is answered by an E row and changes nothing.
 
    Reporting: up to ten times the 11/23's pace every tick is reported. Faster
    than that (full speed) a tick's W and P rows are written only when 1/60 s
@@ -70,6 +83,10 @@
 #define CMD_MAX      1024
 
 extern uint16 *M;
+extern int32 R[8];                      /* pdp11_cpu.c: the current register set */
+int32 get_PSW (void);
+t_value get_rval (REG *rptr, uint32 idx);    /* scp.c, not in scp.h */
+#define PANEL_MAX    8
 
 static double speed;                    /* 0 = full speed */
 static int paused, steps;
@@ -85,6 +102,9 @@ static char cmd_buf[CMD_MAX];
 static int cmd_len;
 static int32 watch[WATCH_MAX];
 static int watch_n;
+static int panel = 0;                   /* R rows wanted */
+static int32 panel_at[PANEL_MAX];
+static int panel_n;
 static wall_pacer pacer;                 /* wall_pacer.c */
 
 static t_stat lab_svc (UNIT *uptr);
@@ -154,19 +174,64 @@ static int parse_address (const char *word, int32 *a)
     return 1;
 }
 
+/* A list of addresses into list[max]; 0 if one is bad or there are too many. */
+static int parse_addresses (char *args, int32 *list, int max, int *n)
+{
+    *n = 0;
+    for (char *w = strtok (args, " "); w; w = strtok (NULL, " "))
+        if (*n == max || !parse_address (w, &list[(*n)++]))
+            return 0;
+    return 1;
+}
+
 static const char *set_watch (char *args)
 {
     int32 list[WATCH_MAX];
-    int n = 0;
-    for (char *w = strtok (args, " "); w; w = strtok (NULL, " ")) {
-        if (n == WATCH_MAX) return "watch takes at most 64 addresses";
-        if (!parse_address (w, &list[n++]))
-            return "watch takes even octal addresses below 160000";
-    }
+    int n;
+    if (!parse_addresses (args, list, WATCH_MAX, &n))
+        return "watch takes at most 64 even octal addresses below 160000";
     memcpy (watch, list, sizeof list);
     watch_n = n;
     say_watch ();
     return NULL;
+}
+
+static const char *set_panel (char *args)
+{
+    int32 list[PANEL_MAX];
+    int n;
+    if (strcmp (args, "off") == 0) {
+        panel = 0;
+        return NULL;
+    }
+    if (!parse_addresses (args, list, PANEL_MAX, &n))
+        return "panel takes at most 8 even octal addresses below 160000, or off";
+    memcpy (panel_at, list, sizeof list);
+    panel_n = n;
+    panel = 1;
+    return NULL;
+}
+
+static t_value device_reg (DEVICE *dptr, char *name, uint32 idx)
+{
+    REG *r = find_reg (name, NULL, dptr);
+    return r ? get_rval (r, idx) : 0;
+}
+
+static void write_panel (void)
+{
+    int32 ip = R[4] & 0177776;
+    fprintf (out (), "R,%.6f", clock_time ());
+    for (int i = 0; i < 8; i++)
+        fprintf (out (), ",%o", (int) (R[i] & 0177777));
+    fprintf (out (), ",%o,%o", (int) (get_PSW () & 0177777), ip < MEM_TOP ? M[ip >> 1] : 0);
+    fprintf (out (), ",%o,%o,%o", (int) device_reg (&kwl_dev, "LKS", 0),
+             (int) device_reg (&drv_dev, "CSR", 0), (int) device_reg (&drv_dev, "OUTBUF", 0));
+    for (int i = 0; i < PLANT_AXES; i++)
+        fprintf (out (), ",%o", (int) device_reg (&aav_dev, "DAC", i));
+    for (int i = 0; i < panel_n; i++)
+        fprintf (out (), ",%o", M[panel_at[i] >> 1]);
+    fputc ('\n', out ());
 }
 
 static const char *dump (char *args)
@@ -207,8 +272,11 @@ static void command (char *line)
         plant_dev_power (strcmp (args, "on") == 0);
     else if (strcmp (line, "power") == 0)
         why = "power takes on or off";
+    else if (strcmp (line, "panel") == 0)
+        why = set_panel (args);
     else if (*line)
-        why = "commands: speed X, pause, run, step, watch ADDR..., dump ADDR N, power on|off";
+        why = "commands: speed X, pause, run, step, watch ADDR..., dump ADDR N, power on|off, "
+              "panel [ADDR...|off]";
     if (why && out ())
         fprintf (out (), "E,%s\n", why);
     say_state ();
@@ -328,6 +396,8 @@ static t_stat lab_svc (UNIT *uptr)
         reporting = report_this_tick () || paused || steps > 0;
         if (reporting)
             write_sample ();
+        if (reporting && panel)
+            write_panel ();
     }
     if (reporting)
         write_plant ();
@@ -385,7 +455,7 @@ static t_stat lab_detach (UNIT *uptr)
     device_detach_text (uptr);
     if (ctl_fd >= 0) close (ctl_fd);
     ctl_fd = -1;
-    paused = steps = 0;
+    paused = steps = panel = 0;
     return SCPE_OK;
 }
 

@@ -404,11 +404,12 @@ static t_stat plant_show_layout (FILE *st, UNIT *uptr, int32 val, void *desc)
 static t_stat plant_show_axes (FILE *st, UNIT *uptr, int32 val, void *desc)
 {
     plant_dev_catch_up ();
-    fprintf (st, "\n  axis  pos(counts)  position      vel(c/s)  dac   vcmd(c/s)  offset   stop   run counter");
+    /* under 80 columns a line: SHOW PLANT is read on 80-column terminals and the lab page */
+    fprintf (st, "\n  ax  pos(counts) position     vel(c/s) dac  vcmd(c/s) offset stop run counter");
     for (int i = 0; i < PLANT_AXES; i++) {
         const plant_axis *a = &robot_plant.ax[i];
         int stop = plant_at_stop (&robot_plant, i);
-        fprintf (st, "\n  %c   %11.3f %10.4f %-3s %10.3f  %04d %10.3f %8.3f  %-5s  %d  %6d",
+        fprintf (st, "\n  %c %12.3f %8.4f %-3s %9.3f %04d %10.3f %7.3f %-5s %d %6d",
                  plant_axis_names[i], a->p, a->p / plant_counts_per_unit (i), plant_unit_name (i),
                  a->v, a->code, plant_vcmd (&robot_plant, i), plant_offset (&robot_plant, i),
                  stop > 0 ? "upper" : (stop < 0 ? "lower" : "-"), a->run,
@@ -421,14 +422,14 @@ static t_stat plant_show_axes (FILE *st, UNIT *uptr, int32 val, void *desc)
                  plant_get_param (&robot_plant, i, P_AMAX), plant_get_param (&robot_plant, i, P_VMAX),
                  plant_get_param (&robot_plant, i, P_PMIN), plant_get_param (&robot_plant, i, P_PMAX),
                  plant_get_param (&robot_plant, i, P_WALK));
-    fprintf (st, "\n  gripper  opening %.2f in (%d steps), object %.3f in, contact %d, "
-             "pulses %lu, missed %lu, blocked %lu, pullout %g steps/s, step %d dir %d",
+    fprintf (st, "\n  gripper  opening %.2f in (%d steps), object %.3f in, contact %d,"
+             "\n           pulses %lu, missed %lu, blocked %lu, pullout %g steps/s, step %d dir %d",
              gripper_opening (&robot_gripper), robot_gripper.steps, robot_gripper.object_in,
              gripper_contact (&robot_gripper), robot_gripper.pulses, robot_gripper.missed,
              robot_gripper.blocked, robot_gripper.pullout, robot_gripper.step_line,
              robot_gripper.dir_line);
     if (robot_gripper.part)
-        fprintf (st, ", part at %.0f %.0f %.0f%s", robot_gripper.part_at[0],
+        fprintf (st, ",\n           part at %.0f %.0f %.0f%s", robot_gripper.part_at[0],
                  robot_gripper.part_at[1], robot_gripper.part_at[2],
                  gripper_contact (&robot_gripper) ? " (held)" : "");
     return SCPE_OK;

@@ -24,3 +24,12 @@ def test_dac_writes_reach_the_plant():
     rows = {line.split()[0]: line.split() for line in out.splitlines()
             if line.startswith("  ") and line.split()[0] in "XYZT" and len(line.split()) > 10}
     assert [rows[a][5] for a in "XYZT"] == ["2148", "1536", "2048", "4095"]
+
+
+def test_examine_reads_every_channel_of_the_register_table():
+    """EXAMINE AAV11 DAC[n] (and the lab's front panel, which reads the same table)
+    sees each channel: the table steps by the array's element size."""
+    out = simh.run("deposit 17770442 1234\ndeposit 17770446 7777\n"
+                   + "".join(f"examine aav11 dac[{i}]\n" for i in range(4)))
+    assert [line.split()[-1] for line in out.splitlines() if "DAC[" in line] == \
+        ["4000", "1234", "4000", "7777"]

@@ -6,6 +6,8 @@ import sys
 import pytest
 
 from harness.analysis.listing import make_listing
+from harness.blocks.blockfile import BLOCK_BYTES, text_to_block
+from harness.machine.build import fresh_disk
 from tests.conftest import ROOT
 
 
@@ -107,3 +109,21 @@ def test_blocks_that_need_others_first_say_so_and_take_load(tmp_path):
                        text=True)
     assert r.returncode == 0, r.stderr
     assert out.read_text().startswith("Block 1060\n")
+
+
+def test_cli_lists_a_block_of_the_users_own_disk(tmp_path):
+    """--disk: a block the user wrote (here 1100, packed into a copy of the disk)
+    listed beside what it compiled; the image itself is only read."""
+    disk = fresh_disk(tmp_path, "mine.dsk")
+    with open(disk, "r+b") as image:
+        image.seek(1100 * BLOCK_BYTES)
+        image.write(text_to_block(": Twice ( n -- 2n )   DUP + ;\n"))
+    before = disk.read_bytes()
+    r = subprocess.run([sys.executable, "-m", "harness", "listing", "--disk", str(disk),
+                        "--blocks", "1100"], cwd=ROOT, capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    assert "header of Twice" in r.stdout and "DUP" in r.stdout
+    assert disk.read_bytes() == before
+    r = subprocess.run([sys.executable, "-m", "harness", "listing", "--blocks", "1100"],
+                       cwd=ROOT, capture_output=True, text=True)      # not on the pristine disk
+    assert r.returncode == 2 and "argument --blocks" in r.stderr

@@ -30,3 +30,14 @@ def test_a_layout_of_other_columns_is_refused():
     with pytest.raises(ValueError, match="not understood"):
         parse_layout(text)
     assert "columns" not in simh.run("show plant\n")          # only when named
+
+
+def test_show_plant_fits_80_columns_and_still_parses():
+    """An 80-column terminal (the lab page's, make run's) shows SHOW PLANT unwrapped,
+    the gripper's lines with a part placed included (issue 18)."""
+    out = simh.run("set plant gripper object=1,partx=800,party=800,partz=400\n"
+                   "set plant x pos=-9000\nshow plant\n")
+    lines = out[out.index("PLANT, "):].splitlines()[1:]
+    assert len(lines) >= 12 and max(len(ln) for ln in lines) < 80, lines
+    assert plant_rows.parse_show_plant(out)["X"]["pos"] == -9000
+    assert plant_rows.parse_show_gripper(out)["part"] == (800, 800, 400)

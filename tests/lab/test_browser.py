@@ -6,6 +6,7 @@ import pytest
 from selenium.webdriver.common.by import By
 
 from harness.analysis.trace import parse_rows
+from harness.machine.build import BUILD
 from harness.machine.plant_rows import COLUMNS
 
 from labpage import ARTIFACTS, click, js, type_line, wait_for
@@ -26,6 +27,8 @@ def page(lab_server, browser):
 def test_the_terminal_answers(page):
     assert "2 3 + . 5  ok" in type_line(page, "2 3 + .")
     assert "token=" not in page.current_url          # off the address bar
+    violations = accessibility_violations(page)      # before 1000 LOAD: no servo data yet
+    assert not [v for v in violations if v[1] in ("serious", "critical")], violations
 
 
 def test_a_move_shows_on_the_robot_and_the_scope(page):
@@ -37,7 +40,8 @@ def test_a_move_shows_on_the_robot_and_the_scope(page):
     assert js(page, "window.lab.status.power") == "off"       # booted as make run does
     click(page, "#power")                            # the servo holds the axes: rack on
     wait_for("the amplifiers on", lambda: js(page, "window.lab.status.power") == "on")
-    assert page.find_element(By.ID, "power").text == "Amplifiers ON"
+    power = page.find_element(By.ID, "power")     # labelled with what a click does
+    assert power.text == "Turn amps off" and power.get_attribute("aria-pressed") == "true"
     robot_before = js(page, "document.getElementById('robot').toDataURL()")
     start = js(page, "window.lab.latest.map(r => r[5])")
     click(page, '#speeds button[data-speed="real"]')  # the scope's 30 s keep the whole move
@@ -55,6 +59,13 @@ def test_a_move_shows_on_the_robot_and_the_scope(page):
     end = js(page, "window.lab.latest.map(r => r[5])")
     assert all(abs(e - s - moved) < 150 for s, e, moved in zip(start, end, (800, 800, 400)))
     assert js(page, "document.getElementById('robot').toDataURL()") != robot_before
+    view = js(page, "window.lab.robotView")           # the robot panel: the move's trail,
+    assert view["trail"] > 100 and view["origin"] is not None     # the zero it counts from,
+    assert view["targets"][-1]["d"] == [800, 800, 400, 0]         # the target, the fingers
+    assert view["fingers"] == {"opening": 2.0, "held": False}
+    origin = view["origin"]                           # Set.Up.Robot's zero: position - counter
+    x = js(page, "window.lab.latest[0]")
+    assert abs(origin[0] - (x[5] - x[6])) < 1.5     # the counter is the position, whole
     click(page, "#pause")
     wait_for("the pause", lambda: js(page, "window.lab.status.state") == "pause")
     click(page, '#windows button[data-window="30"]')
@@ -80,8 +91,92 @@ def test_pause_holds_simulated_time_and_step_is_one_tick(page):
     click(page, '#axes button[data-axis="0"]')       # x's hunting, tick by tick
     click(page, '#windows button[data-window="2"]')
     page.save_screenshot(str(ARTIFACTS / "lab.png"))
+    textarea = page.find_element(By.CSS_SELECTOR, "#terminal textarea")
+    textarea.send_keys("1 1 + .")                    # typed while paused: shown, waiting
+    shown = wait_for("the typed-ahead line", lambda: page.find_element(By.ID, "typed-ahead"))
+    assert shown.is_displayed() and "1 1 + ." in shown.text
     click(page, "#pause")                            # now reads "Run"
     wait_for("the run to go on", lambda: js(page, "window.lab.status.time") > stepped["time"])
+    wait_for("the typed-ahead line to go",
+             lambda: not page.find_element(By.ID, "typed-ahead").is_displayed())
+    assert "1 1 + . 2  ok" in type_line(page, "")
+
+
+AXE = BUILD / "lab" / "node_modules" / "axe-core" / "axe.min.js"   # pinned: harness/lab/package.json
+
+
+def accessibility_violations(page):
+    """axe-core's violations on the page as it is: (rule, impact, nodes, help)."""
+    page.execute_script(AXE.read_text())
+    page.set_script_timeout(60)
+    return page.execute_async_script(
+        "const done = arguments[arguments.length - 1];"
+        "axe.run(document, { resultTypes: ['violations'] }).then((r) => done("
+        "r.violations.map((v) => [v.id, v.impact, v.nodes.length, v.help])));")
+
+
+@pytest.mark.parametrize("width, height", [(1280, 720), (1920, 1080)])
+def test_the_page_fits_both_projectors_without_scrolling(page, width, height):
+    """Each panel present, nothing scrolls, at both projector sizes; the screenshots
+    (build/test-artifacts/lab-WIDTH.png) are looked at by eye."""
+    if width == 1280:                                # a longer move, for the trail to show
+        type_line(page, "3200 -2400 400 0 Abs.Move")
+        wait_for("the move", lambda: js(page, "window.lab.latest[0][6]") > 3000)
+    page.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",
+                         {"width": width, "height": height, "deviceScaleFactor": 1, "mobile": False})
+    try:
+        wait_for("the layout", lambda: js(page, "window.innerWidth") == width)
+        page.execute_script("window.dispatchEvent(new Event('resize'))")
+        page.execute_script("return new Promise(r => setTimeout(r, 300))")
+        scroll = js(page, "[document.documentElement.scrollWidth, document.documentElement.scrollHeight]")
+        assert scroll[0] <= width and scroll[1] <= height, scroll
+        front = page.find_element(By.ID, "front-panel").text    # the 11/23, live
+        assert "PSW" in front and "IP" in front and "DAC X" in front
+        assert js(page, "window.lab.panel.registers.length") == 8
+        box = js(page, "document.getElementById('front-panel').getBoundingClientRect().toJSON()")
+        assert box["bottom"] <= height, "the front panel is cut off"
+        for panel in ("console-panel", "robot-panel", "servo-panel", "scope-panel"):
+            box = js(page, f"document.getElementById('{panel}').getBoundingClientRect().toJSON()")
+            assert box["width"] > 200 and box["height"] > 150, (panel, box)
+            assert box["right"] <= width and box["bottom"] <= height, (panel, box)
+        header = js(page, "[...document.querySelectorAll('header button')]"
+                          ".map(b => b.getBoundingClientRect().right)")
+        assert max(header) <= width, "a header button is cut off"
+        page.save_screenshot(str(ARTIFACTS / f"lab-{width}.png"))
+        violations = accessibility_violations(page)
+        assert not [v for v in violations if v[1] in ("serious", "critical")], violations
+    finally:
+        page.execute_cdp_cmd("Emulation.clearDeviceMetricsOverride", {})
+
+
+def test_the_badge_says_when_simh_has_the_machine_stopped(page):
+    textarea = page.find_element(By.CSS_SELECTOR, "#terminal textarea")
+    textarea.send_keys("\x05")
+    wait_for("the badge", lambda: page.find_element(By.ID, "state").text == "STOPPED sim>")
+    screen = type_line(page, "attach lpt /tmp/x", answer="lab: refused")
+    assert "ATTACH opens a host file" in screen
+    textarea.send_keys("cont\n")
+    wait_for("the badge", lambda: page.find_element(By.ID, "state").text.startswith("RUN"))
+
+
+def test_a_breakpoint_on_a_word_stops_the_machine_and_shows_the_history(page):
+    field = page.find_element(By.ID, "break-word")
+    field.send_keys(".")                             # the word that prints a number
+    click(page, '#break-form button[type="submit"]')
+    wait_for("the run again", lambda: page.find_element(By.ID, "state").text.startswith("RUN"))
+    page.execute_script("return new Promise(r => setTimeout(r, 500))")   # CONT's input flush
+    page.find_element(By.CSS_SELECTOR, "#terminal textarea").send_keys("5 .\n")
+    shown = wait_for("the history", lambda: page.find_element(By.ID, "history").is_displayed())
+    assert shown and page.find_element(By.ID, "state").text == "STOPPED sim>"
+    text = page.find_element(By.ID, "history-text").text
+    assert "in word" in text and len(text.splitlines()) > 5
+    assert all(row[3] for row in js(page, "window.lab.history"))
+    page.save_screenshot(str(ARTIFACTS / "lab-breakpoint.png"))
+    click(page, "#history-close")
+    before = js(page, "window.lab.screen()").count("5  ok")
+    click(page, "#nobreak")                          # cleared: the line's answer comes
+    wait_for("5  ok", lambda: js(page, "window.lab.screen()").count("5  ok") > before)
+    page.find_element(By.CSS_SELECTOR, "#terminal textarea").click()
 
 
 def test_the_asn_shows_its_trial_steps_payoff_and_weights(page):

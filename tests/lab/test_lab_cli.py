@@ -71,6 +71,27 @@ def test_the_shell_that_runs_the_lab_is_a_console_too(tmp_path):
     assert child.exitstatus == 0
 
 
+def test_the_shell_keeps_the_full_simh_console(tmp_path):
+    """The lab's own shell is not the page: at sim> it runs what the page may not
+    (here `! echo`, a host shell command), its Enter ending the line there."""
+    child, _ = lab_in_a_terminal(tmp_path)
+    child.send("\x05")
+    child.expect("sim> ")
+    child.send("! echo shell-ran-$((6*7))\r")
+    child.expect("shell-ran-42")
+    child.expect("sim> ")
+    child.send("cont\r")
+    for _ in range(40):                       # what CONT's TCSAFLUSH may have eaten
+        child.send("\r")
+        if child.expect([r" ok\r", pexpect.TIMEOUT], timeout=0.25) == 0:
+            break
+    child.send("BYE\r")
+    child.expect("FLUSH answered ok")
+    child.expect(pexpect.EOF)
+    child.close()
+    assert child.exitstatus == 0
+
+
 def test_closing_the_shells_terminal_leaves_with_flush(tmp_path):
     """The lab's terminal window closed (SIGHUP): FLUSH, detach, exit 0, the
     UPDATEd block on the disk."""

@@ -6,8 +6,10 @@ import time
 
 import pytest
 
+from harness.lab.protocol import DEVICE_COMMANDS, DEVICE_ROWS, Refused, device_command, \
+    device_help
 from harness.machine import simh
-from harness.machine.build import KERNEL, fresh_disk
+from harness.machine.build import KERNEL, ROOT, fresh_disk
 from harness.machine.plant_rows import COLUMNS
 
 TYPED = "1000 LOAD\rSet.Up.Robot\r800 800 400 0 Abs.Move\r"
@@ -42,7 +44,7 @@ def test_rows_and_commands(tmp_path, ctl):
     assert rows(out, "M") == [["140000", str(0o1234), "65535"]]
     assert [e[0] for e in rows(out, "E")] == [
         "speed takes a number from 0 (full speed) to 1000 (times the 11/23's pace)",
-        "watch takes even octal addresses below 160000",
+        "watch takes at most 64 even octal addresses below 160000",
         "commands: speed X", ]
     samples = rows(out, "W")
     assert [s[1] for s in samples] == ["1", "2", "3", "4"]         # every 5000 instructions
@@ -102,8 +104,9 @@ def test_pacing_pausing_and_stepping_change_nothing_the_machine_does(tmp_path, c
             while len(paused_at()) < n and time.monotonic() < deadline:
                 time.sleep(0.02)       # each step once the last one has paused
             ctl(command + "\n")
-    ctl("speed 100\npause\n")
+    ctl("speed 100\npanel 7160\npause\n")       # the front panel's rows too
     watched, watched_out = run_servo(tmp_path, "watched", lab, user)
+    assert rows(lab, "R")
     assert watched == plain
     assert watched_out.replace(str(tmp_path / "watched"), "") == plain_out.replace(
         str(tmp_path / "plain"), "")
@@ -120,3 +123,60 @@ def test_ticks_keep_their_simulated_times_when_rate_changes(tmp_path):
     times = [s[0] for s in rows(out, "W")]
     assert times == ["0.016667", "0.033333", "0.050000", "0.066667",
                      "0.083333", "0.100000", "0.116667", "0.133333"]
+
+
+def test_panel_rows_show_registers_psw_and_device_registers(tmp_path, ctl):
+    """`panel ADDR...`: an R row each tick, all octal: R0-R7, the PSW, the word at
+    R4 (IP), the KW11-L's LKS, the DRV11's CSR and OUTBUF, the four DACs, the words
+    asked for."""
+    out = tmp_path / "lab"
+    ctl("panel 140000\npanel 140001\n")
+    simh.run(f"load {KERNEL}\n" + simh.deposit(0o140000, [0o1234]) +
+             f"attach lab {out}\nset lab speed=10\nstep 21000\nshow cpu\ndetach lab\n")
+    panel = rows(out, "R")
+    assert len(panel) == 4 and all(len(r) == 1 + 8 + 2 + 3 + 4 + 1 for r in panel)
+    last = panel[-1]
+    registers = [int(v, 8) for v in last[1:9]]
+    assert all(0 <= r < 0o200000 for r in registers) and registers[7] % 2 == 0
+    psw = int(last[9], 8)
+    assert psw >> 14 == 0                            # kernel mode, as the FORTH runs
+    lks = int(last[11], 8)
+    assert lks & 0o200                               # the KW11-L has ticked (MON)
+    assert last[14:18] == ["4000"] * 4               # every DAC at 2048: zero volts
+    assert last[18] == "1234"                        # the word asked for
+    assert [e[0] for e in rows(out, "E")] == [
+        "panel takes at most 8 even octal addresses below 160000"]
+
+
+# ---- the device's side of the lab protocol: one list, in lab.c and protocol.py --------
+LAB_C = ROOT / "pdp11-devices" / "lab" / "lab.c"
+
+
+def header_section(title, until):
+    """The lines of lab.c's header comment from `title` up to `until`."""
+    text = LAB_C.read_text().split("*/", 1)[0]
+    return text.split(title, 1)[1].split(until, 1)[0].splitlines()
+
+
+def test_the_device_refuses_an_unknown_command_with_the_protocols_list(tmp_path, ctl):
+    out = tmp_path / "lab"
+    ctl("fly\n")
+    simh.run(f"load {KERNEL}\nattach lab {out}\nstep 11000\ndetach lab\n")
+    assert [e[0] for e in rows(out, "E")] == [f"commands: {device_help()}".split(",")[0]]
+    assert f"E,commands: {device_help()}\n" in out.read_text()
+
+
+def test_lab_c_header_lists_the_protocols_commands_and_rows():
+    commands = [line.split()[0] for line in header_section("Commands, one per line", "A bad")
+                if line.startswith("     ") and line.split() and line[5] != " "]
+    assert commands == list(DEVICE_COMMANDS)
+    kinds = [line.split(",")[0].strip() for line in header_section("Rows, one per line", "Commands")
+             if line.startswith("     ") and line[5] != " " and "," in line]
+    assert kinds == list(DEVICE_ROWS)
+
+
+def test_the_server_writes_only_the_devices_commands():
+    for name, args in DEVICE_COMMANDS.items():
+        assert device_command(f"{name} {args}".rstrip())
+    with pytest.raises(Refused, match="no command 'fly'"):
+        device_command("fly 3")

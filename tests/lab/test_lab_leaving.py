@@ -1,8 +1,9 @@
 """Every way out at the page's sim> writes the FORTH's UPDATEd blocks first
-(issue 23): SIMH's QUIT typed, edited with the terminal's ^W, abbreviated or read
-from a DO file, through the page's websocket; the simulator FLUSHes
-(pdp11-devices/simh/leave_check.c), the lab reports it and exits 0. And the FORTH's BYE
-word inside a line ends the lab as it ends make run."""
+(issue 23): SIMH's QUIT typed, edited with ^W or abbreviated, through the page's
+websocket; the simulator FLUSHes (pdp11-devices/simh/leave_check.c), the lab
+reports it and exits 0. (DO, which could read QUIT from a file, is refused at the
+page's sim> since issue 18: tests/lab/test_sim_prompt_server.py.) And the FORTH's
+BYE word inside a line ends the lab as it ends make run."""
 import asyncio
 import contextlib
 
@@ -13,8 +14,7 @@ from harness.lab.page_client import Page
 
 BLOCK = 300
 BOOTED = "blocks 0-10239.\r\n ok\r\n"
-WAYS_OUT = {"typed": "quit\r", "^W-edited": "xyz \x17quit\r", "abbreviated": "q\r",
-            "DO file": "do {do_file}\r"}
+WAYS_OUT = {"typed": "quit\r", "^W-edited": "xyz \x17quit\r", "abbreviated": "q\r"}
 
 
 async def page_session(server, steps):

@@ -44,9 +44,10 @@ def test_the_servers_dispatch_is_the_protocols():
 
 
 def test_the_pages_messages_are_the_protocols():
-    """Every message lab.js sends names a kind of FROM_PAGE with exactly its fields,
-    and every kind it reads is one of TO_PAGE."""
-    source = (STATIC / "lab.js").read_text()
+    """Every message the page's scripts (lab.js and its panels' lab-*.js) send names
+    a kind of FROM_PAGE with exactly its fields, and every kind they read is one of
+    TO_PAGE."""
+    source = "".join(path.read_text() for path in sorted(STATIC.glob("lab*.js")))
     sent = re.findall(r"send\(\{ t: ([^}]*)\}\)", source)
     assert len(sent) >= 6
     kinds = set()

@@ -78,7 +78,7 @@ lab.type = (d) => {                 // what the terminal gives, and tests
   lab.outbox += d;
   sendKeys();
 };
-term.onData(lab.type);
+term.onData((d) => { typedAhead.key(d, lab.status); lab.type(d); });   // lab-typed-ahead.js
 lab.take = () => send({ t: "take" });
 document.getElementById("take").addEventListener("click", () => { lab.take(); term.focus(); });
 function showInput() {
@@ -106,6 +106,7 @@ socket.onmessage = (event) => {
   const m = JSON.parse(event.data);
   if (m.t === "con") term.write(m.d);
   else if (m.t === "data") { takeData(m); showInput(); }
+  else if (m.t === "history") showHistory(m.rows);   // lab-panel.js
   else if (m.t === "hello") {
     learnPlant(m.plant);
     Object.assign(lab, { stops: m.stops, perAxis: m.per_axis, single: m.single, status: m.status });
@@ -153,6 +154,7 @@ function takeData(m) {
   lab.status = m.status;
   if (m.status.waiting === 0 && !lab.outbox) lab.room = Math.max(lab.room, MAX_KEYS);
   lab.servo = m.servo;
+  if (m.panel) lab.panel = m.panel;   // lab-panel.js draws it
   for (const row of m.rows) {
     const trace = lab.traces[row[ROW.axis]];
     trace.push(row);
@@ -187,13 +189,18 @@ function drawStatus() {
   document.getElementById("simtick").textContent = `tick ${s.tick} \u00b7 60 Hz`;
   if (!lab.ended) {
     const speedText = { real: "\u00d71", x10: "\u00d710", full: "FULL" }[s.speed] || "";
-    if (s.state === "pause") setBadge("pause", "PAUSED");
+    if (s.prompt) setBadge("pause", "STOPPED sim>");   // SIMH has the machine stopped
+    else if (s.state === "pause") setBadge("pause", "PAUSED");
     else setBadge("run", `RUN ${speedText}`);
   }
   document.getElementById("pause").textContent = s.state === "pause" ? "Run" : "Pause";
   const power = document.getElementById("power");
-  power.textContent = s.power === "on" ? "Amplifiers ON" : "Amplifiers OFF";
+  power.textContent = s.power === "on" ? "Turn amps off" : "Turn amps on";  // what a click does
+  power.title = `the amplifier rack is ${s.power.toUpperCase()}: click to switch it ` +
+    `${s.power === "on" ? "off" : "on"} (SET PLANT POWER)`;
+  power.setAttribute("aria-pressed", String(s.power === "on"));
   power.classList.toggle("on", s.power === "on");
+  typedAhead.status(s);
   document.querySelectorAll("#speeds button").forEach((b) =>
     b.classList.toggle("on", b.dataset.speed === s.speed));
 }
@@ -244,102 +251,7 @@ function units(axis, counts) {
   return `${(counts / COUNTS_PER_UNIT[axis]).toFixed(3)} ${UNITS[axis]}`;
 }
 
-// ---- the robot ---------------------------------------------------------------------------
-function drawRobot() {
-  const { g, w, h } = sized(document.getElementById("robot"));
-  g.clearRect(0, 0, w, h);
-  const gauge = Math.min(150, w * 0.2), top = 26, bottom = h - 34;
-  const sx = stopsOf(0), sy = stopsOf(1);
-  const spanX = sx.max - sx.min, spanY = sy.max - sy.min;
-  const avail = { w: w - 2 * gauge - 40, h: bottom - top };
-  const scale = Math.min(avail.w / spanX, avail.h / spanY);
-  const bw = spanX * scale, bh = spanY * scale, bx = 20 + (avail.w - bw) / 2, by = top + (avail.h - bh) / 2;
-  const px = (x) => bx + (x - sx.min) * scale, py = (y) => by + bh - (y - sy.min) * scale;
-  // the work area, a grid line every inch, end stops on its edges
-  g.fillStyle = "#0b1220";
-  g.fillRect(bx, by, bw, bh);
-  g.strokeStyle = "#1c2635";
-  g.lineWidth = 1;
-  for (let x = Math.ceil(sx.min / 800) * 800; x <= sx.max; x += 800) {
-    g.beginPath(); g.moveTo(px(x), by); g.lineTo(px(x), by + bh); g.stroke();
-  }
-  for (let y = Math.ceil(sy.min / 800) * 800; y <= sy.max; y += 800) {
-    g.beginPath(); g.moveTo(bx, py(y)); g.lineTo(bx + bw, py(y)); g.stroke();
-  }
-  const edge = (hit, x0, y0, x1, y1) => {
-    g.strokeStyle = hit ? "#ff5c5c" : "#30363d";
-    g.lineWidth = hit ? 7 : 3;
-    g.beginPath(); g.moveTo(x0, y0); g.lineTo(x1, y1); g.stroke();
-  };
-  const stopX = atStop(0), stopY = atStop(1);
-  edge(stopX < 0, bx, by, bx, by + bh);
-  edge(stopX > 0, bx + bw, by, bx + bw, by + bh);
-  edge(stopY < 0, bx, by + bh, bx + bw, by + bh);
-  edge(stopY > 0, bx, by, bx + bw, by);
-  // the gantry: a bridge along y at the carriage's x, the carriage on it
-  const x = position(0), y = position(1);
-  g.strokeStyle = "#6e7681"; g.lineWidth = 10; g.lineCap = "butt";
-  g.beginPath(); g.moveTo(px(x), by); g.lineTo(px(x), by + bh); g.stroke();
-  g.fillStyle = "#c9d1d9";
-  g.fillRect(px(x) - 14, py(y) - 14, 28, 28);
-  g.fillStyle = COLORS[0];
-  g.beginPath(); g.arc(px(x), py(y), 6, 0, 2 * Math.PI); g.fill();
-  const tx = target(0), ty = target(1);
-  if (tx !== null && ty !== null) {
-    g.strokeStyle = "#f0883e"; g.lineWidth = 2.5;
-    g.beginPath(); g.arc(px(tx), py(ty), 18, 0, 2 * Math.PI); g.stroke();
-    g.beginPath(); g.moveTo(px(tx) - 26, py(ty)); g.lineTo(px(tx) + 26, py(ty));
-    g.moveTo(px(tx), py(ty) - 26); g.lineTo(px(tx), py(ty) + 26); g.stroke();
-  }
-  label(g, `x ${units(0, x)}`, bx, h - 10, COLORS[0], "left", 17);
-  label(g, `y ${units(1, y)}`, bx + bw, h - 10, COLORS[1], "right", 17);
-  label(g, "top view", bx + 6, by + 18, "#8b949e", "left", 13);
-  drawZ(g, w - 2 * gauge + 10, top, gauge - 20, bottom - top);
-  drawT(g, w - gauge + 10, top, gauge - 20, bottom - top);
-}
-
-function drawZ(g, x, y, w, h) {                     // z: a height gauge, stops at its ends
-  const s = stopsOf(2), z = position(2), stop = atStop(2), t = target(2);
-  const bar = Math.min(46, w * 0.45), bx = x + (w - bar) / 2, top = y + 10, hh = h - 30;
-  const py = (v) => top + hh - (v - s.min) / (s.max - s.min) * hh;
-  g.fillStyle = "#0b1220"; g.fillRect(bx, top, bar, hh);
-  g.fillStyle = COLORS[2]; g.globalAlpha = 0.35;
-  g.fillRect(bx, py(z), bar, top + hh - py(z)); g.globalAlpha = 1;
-  g.fillStyle = COLORS[2]; g.fillRect(bx - 8, py(z) - 4, bar + 16, 8);
-  for (const [v, hit] of [[s.min, stop < 0], [s.max, stop > 0]]) {
-    g.fillStyle = hit ? "#ff5c5c" : "#30363d";
-    g.fillRect(bx - 12, py(v) - (hit ? 4 : 2), bar + 24, hit ? 8 : 4);
-  }
-  if (t !== null) {
-    g.strokeStyle = "#f0883e"; g.lineWidth = 2.5;
-    g.beginPath(); g.moveTo(bx - 18, py(t)); g.lineTo(bx + bar + 18, py(t)); g.stroke();
-  }
-  label(g, "z", x + w / 2, y + 4, COLORS[2], "center", 17);
-  label(g, units(2, z), x + w / 2, y + h + 24, COLORS[2], "center", 17);
-}
-
-function drawT(g, x, y, w, h) {                     // t: a dial, 0 degrees up
-  const deg = position(3) / COUNTS_PER_UNIT[3], t = target(3), stop = atStop(3);
-  const r = Math.min(w, h) / 2 - 8, cx = x + w / 2, cy = y + h / 2;
-  g.strokeStyle = stop ? "#ff5c5c" : "#30363d"; g.lineWidth = stop ? 6 : 3;
-  g.beginPath(); g.arc(cx, cy, r, 0, 2 * Math.PI); g.stroke();
-  g.strokeStyle = "#30363d"; g.lineWidth = 2;
-  for (let a = 0; a < 360; a += 30) {
-    const q = (a - 90) * Math.PI / 180;
-    g.beginPath(); g.moveTo(cx + Math.cos(q) * (r - 8), cy + Math.sin(q) * (r - 8));
-    g.lineTo(cx + Math.cos(q) * r, cy + Math.sin(q) * r); g.stroke();
-  }
-  const needle = (angle, color, width, length) => {
-    const q = (angle - 90) * Math.PI / 180;
-    g.strokeStyle = color; g.lineWidth = width;
-    g.beginPath(); g.moveTo(cx, cy); g.lineTo(cx + Math.cos(q) * length, cy + Math.sin(q) * length);
-    g.stroke();
-  };
-  if (t !== null) needle(t / COUNTS_PER_UNIT[3], "#f0883e", 2.5, r - 4);
-  needle(deg, COLORS[3], 6, r - 14);
-  label(g, "t", x + w / 2, y + 4, COLORS[3], "center", 17);
-  label(g, `${deg.toFixed(2)}\u00b0`, x + w / 2, y + h + 24, COLORS[3], "center", 17);
-}
+// ---- the robot: lab-robot.js ---------------------------------------------------------
 
 // ---- the scope ---------------------------------------------------------------------------
 const STRIPS = [

@@ -1,0 +1,111 @@
+"""The 11/23's front panel: R rows decoded (harness/lab/front_panel.py) and, in a
+running lab, the registers, the words named from the dictionary, the block and
+line being loaded, and the bus devices' registers reaching the page."""
+import asyncio
+import json
+import re
+
+from harness.lab.dictionary import Memory
+from harness.lab.front_panel import WordIndex, decode_psw, panel
+from test_sim_prompt_server import session
+
+
+def test_psw_fields():
+    assert decode_psw(0o340) == {"mode": "kernel", "priority": 7, "T": 0,
+                                 "N": 0, "Z": 0, "V": 0, "C": 0}
+    assert decode_psw(0o300 | 0o20 | 0o5) == {"mode": "kernel", "priority": 6, "T": 1,
+                                              "N": 0, "Z": 1, "V": 0, "C": 1}
+    assert decode_psw(0o140000)["mode"] == "user"
+
+
+def test_words_are_named_from_the_dictionary_and_the_map():
+    memory = Memory()                      # one chain: a header "SQ" at 1000, cfa 1004
+    memory.store(0o2000, [0, 0, 0, 0])     # a vocabulary's four chain heads
+    memory.store(0o2000, [0o1000])
+    memory.store(0o1000, [0, 2 | (ord("S") << 8), ord("Q")])
+    index = WordIndex({0o400: "DUP"})
+    index.learn(memory, 0o2000)
+    assert index.name_at(0o1006) == "SQ" and index.containing(0o1020) == "SQ"
+    assert index.containing(0o500) == "DUP" and index.containing(0o300) is None
+    fields = ["1.5"] + ["0"] * 4 + ["1010", "0", "0", "1012"] + ["340", "400"] \
+        + ["200", "0", "0", "4000", "4000", "4000", "4000", "1750", "101"]
+    shown = panel(fields, index)
+    assert shown["pc_in"] == "SQ" and shown["ip_in"] == "SQ" and shown["next"] == "DUP"
+    assert shown["psw_fields"]["priority"] == 7
+    assert shown["loading"] == {"block": 1000, "line": 1}       # >IN 65: line 1
+    assert shown["registers"][4] == {"name": "R4", "role": "IP", "value": "001010"}
+    assert panel(["x"], index) is None
+
+
+def test_the_page_gets_the_panel_while_the_blocks_load(lab_server):
+    async def steps(page):
+        await page.ws.send_str(json.dumps({"t": "speed", "v": "x10"}))
+        await page.type("1000 LOAD\r")
+        panels = []
+        loop = asyncio.get_running_loop()
+        deadline = loop.time() + 60
+        while loop.time() < deadline:
+            message = json.loads((await page.ws.receive(timeout=60)).data)
+            if message["t"] == "data" and message.get("panel"):
+                panels.append(message["panel"])
+            elif message["t"] == "con":
+                page.screen += message["d"]
+                if "LOAD  ok" in page.screen:
+                    break
+        await page.ws.send_str(json.dumps({"t": "speed", "v": "full"}))
+        return panels
+    panels = session(lab_server, steps)
+    loading = {p["loading"]["block"] for p in panels if p["loading"]}
+    assert loading and loading <= set(range(1000, 1013)), loading
+    last = panels[-1]
+    assert [r["role"] for r in last["registers"]][4:6] == ["IP", "S (data stack)"]
+    assert last["pc_in"] and last["ip_in"]                  # named from the dictionary
+    devices = {f'{d["device"]} {d["register"]}': d["value"] for d in last["devices"]}
+    assert devices["AAV11-A DAC X"] == "4000" and len(devices["KW11-L LKS"]) == 6
+
+
+async def until_message(page, wanted, timeout=30):
+    """The first message `wanted` accepts; console output on the way is kept."""
+    loop = asyncio.get_running_loop()
+    deadline = loop.time() + timeout
+    while loop.time() < deadline:
+        message = json.loads((await page.ws.receive(timeout=timeout)).data)
+        if message["t"] == "con":
+            page.screen += message["d"]
+        if wanted(message):
+            return message
+    raise AssertionError(f"no such message in {timeout} s; console:\n{page.screen[-1500:]}")
+
+
+def test_a_breakpoint_on_a_forth_word_stops_with_its_history(lab_server):
+    """The page names a word; the lab breaks on its code field (through sim>'s own
+    SET CPU HISTORY, BREAK and CONT); when the word runs, the page gets the
+    instructions before it, each with the word its PC lies in; clearing the
+    breakpoint lets the run go on, the word's answer intact."""
+    async def steps(page):
+        start = len(page.screen)
+        await page.type(": TWICE ( n -- 2n ) DUP + ;\r")
+        await page.until(r"ok\r\n", start)
+        start = len(page.screen)
+        for _ in range(20):               # until the lab has read the new dictionary
+            await page.ws.send_str(json.dumps({"t": "break", "word": "twice"}))
+            said = await page.until(r"\[lab\] (breakpoint on|no word) [^\r]*\r", len(page.screen))
+            if "breakpoint on" in said:
+                break
+            await asyncio.sleep(0.5)
+        await page.until(r"sim> cont", start)
+        await asyncio.sleep(0.5)                        # CONT's flush of typed-ahead keys
+        await page.type("3 TWICE .\r")
+        history = (await until_message(page, lambda m: m["t"] == "history"))["rows"]
+        said = page.screen[start:]
+        await page.ws.send_str(json.dumps({"t": "nobreak"}))
+        await page.until(r"nobreak all[\s\S]*6  ok", start)
+        await page.ws.send_str(json.dumps({"t": "break", "word": "No.Such.Word"}))
+        await page.until(r"no word No.Such.Word in the dictionary", start)
+        return said, history
+    said, history = session(lab_server, steps)
+    address = re.search(r"breakpoint on twice at ([0-7]{6})", said).group(1)
+    assert f"Breakpoint, PC: {address}" in said
+    assert len(history) > 5 and all(len(row[0]) == 6 and row[2] for row in history)
+    names = [row[3] for row in history]
+    assert all(names) and len(set(names)) > 1       # each PC named: the interpreter's words
