@@ -153,6 +153,7 @@ function drawLesson() {
     out.id = "teach-measured";
     out.className = "measured";
     out.setAttribute("role", "status");
+    out.tabIndex = 0;                  // it scrolls: reachable by keyboard
     out.hidden = true;
     body.append(b, out);
     if (lab.checks[lesson.exercise]) showChecked(lab.checks[lesson.exercise]);
