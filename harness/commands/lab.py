@@ -4,6 +4,7 @@ import argparse
 import asyncio
 from pathlib import Path
 
+from harness.analysis.listing import ListingError, make_listing
 from harness.blocks.disk import DiskError
 from harness.commands.console import ConsoleError, working_disk
 from harness.lab.server import NODE_MODULES, serve
@@ -55,10 +56,20 @@ def run(args):
     symbols = read_kernel_map(KERNEL_MAP)
     try:
         safe = asyncio.run(serve(args.simulator, disk, symbols, args.port, args.speed,
-                                    announce, args.read_only))
+                                    announce, args.read_only, block_listing))
     except OSError as err:
         raise ConsoleError(f"cannot serve on 127.0.0.1:{args.port}: {err.strerror}") from err
     if safe is None:
         print("[lab] the simulator exited on its own: blocks UPDATEd since the last "
               f"FLUSH, if any, were not written to {disk}")
     return 0 if safe else 1
+
+
+def block_listing(image, block):
+    """The program pane's listing (harness/lab/program_pane.py): for each of the
+    block's 16 lines the rows of what it laid down, and None; or None and why."""
+    try:
+        listing = make_listing(block, block, image=image)
+    except ListingError as err:
+        return None, str(err)
+    return [listing.line_code(block, line) for line in range(16)], None

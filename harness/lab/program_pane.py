@@ -1,7 +1,8 @@
 """The lab's program pane (pure logic but for reading the disk image): a block's
 16 lines as the lab's disk holds them, each with the code it laid down, from
-`python -m harness listing` (harness/analysis/listing.py: its own SIMH run on a
-copy of the image, never on the lab's running machine).
+`python -m harness listing` (harness/analysis/listing.py, handed in by
+harness/commands/lab.py as `lister`, since the lab ranks beside analysis: its own
+SIMH run on a copy of the image, never on the lab's running machine).
 
 The text is the disk's: what FLUSH (or a buffer's reuse) last wrote there, not a
 changed buffer the FORTH has not written yet. The page never writes the disk: its
@@ -9,9 +10,8 @@ editor types the editor's words at the FORTH (docs/lab.md, "Program").
 """
 from pathlib import Path
 
-from harness.analysis.listing import BLOCK_BYTES, LINE_CHARS, ListingError, make_listing
-
 BLOCKS = 10240                    # the RL02's blocks (forth/EDITOR.md)
+BLOCK_BYTES, LINE_CHARS = 1024, 64
 
 
 def block_lines(image, block):
@@ -26,9 +26,9 @@ def block_lines(image, block):
 class ProgramPane:
     """Listings of one disk image's blocks, kept while the image is unchanged."""
 
-    def __init__(self, image, lister=make_listing):
+    def __init__(self, image, lister=None):
         self.image = Path(image)
-        self.lister = lister
+        self.lister = lister            # (image, block) -> (16 lists of rows, None) or (None, why)
         self._cache = {}                # block -> (image's stamp, message)
 
     def _stamp(self):
@@ -49,12 +49,14 @@ class ProgramPane:
         code, why = [[] for _ in lines], None
         if not "".join(lines).strip():
             why = f"block {block} is blank"
+        elif self.lister is None:
+            why = "no listing in this lab"
         else:
-            try:
-                listing = self.lister(block, block, image=self.image)
-                code = [listing.line_code(block, line) for line in range(len(lines))]
-            except ListingError as err:
-                why = f"no listing: {err}".replace(str(self.image), "the lab's disk")
+            listed, failed = self.lister(self.image, block)
+            if listed:
+                code = listed
+            else:
+                why = f"no listing: {failed}".replace(str(self.image), "the lab's disk")
         message = {"t": "program", "block": block, "lines": lines, "code": code, "why": why}
         self._cache[block] = (stamp, message)
         return message

@@ -49,13 +49,13 @@ TAKE_KEY = b"\x14"               # ^T in the shell: take the keyboard
 class Lab:
     """The simulator, the servo watch and the connected pages."""
 
-    def __init__(self, simulator, disk, symbols, speed="real", read_only=False):
+    def __init__(self, simulator, disk, symbols, speed="real", read_only=False, lister=None):
         self.sim = Simulator(simulator, disk, self.on_console, self.on_lab, self.on_ended,
                              speed, page=self.to_pages, read_only=read_only)
         self.shell_echo = None           # the shell's terminal, when it types too
         self.watch = ServoWatch(symbols)
         self.rack_hint = RackHint()
-        self.program = ProgramPane(disk)     # the program pane's blocks and listings
+        self.program = ProgramPane(disk, lister)   # the program pane's blocks and listings
         self.disk = disk
         self.checking = set()                # exercises whose check runs now
         self.words = WordIndex({address: name for name, address in symbols.items()})
@@ -367,11 +367,11 @@ def make_app(lab, token, port_of):
     return app
 
 
-async def serve(simulator, disk, symbols, port, speed, announce, read_only=False):
+async def serve(simulator, disk, symbols, port, speed, announce, read_only=False, lister=None):
     """Run the lab until the user leaves; True if every UPDATEd block was written
     and the disk detached, None if the simulator exited by itself."""
     token = guard.new_token()
-    lab = Lab(simulator, disk, symbols, speed, read_only)
+    lab = Lab(simulator, disk, symbols, speed, read_only, lister)
     runner = None
 
     def port_of():

@@ -8,6 +8,7 @@ import json
 
 import aiohttp
 
+from harness.commands.lab import block_listing
 from harness.lab import lesson_checks
 from harness.lab.program_pane import ProgramPane, block_lines
 from harness.machine.build import PRISTINE_DISK
@@ -64,8 +65,9 @@ def test_an_exercise_check_runs_its_commands_and_a_second_click_is_refused(lab_s
 def test_block_lines_and_the_cache_follow_the_disk(tmp_path):
     image = tmp_path / "robot.dsk"
     image.write_bytes(PRISTINE_DISK.read_bytes())
-    pane = ProgramPane(image)
+    pane = ProgramPane(image, block_listing)
     assert pane.message(200)["why"] == "block 200 is blank"
+    assert any("Velocity" in row for row in pane.message(1006)["code"][7])   # listing.py's
     data = bytearray(image.read_bytes())
     data[200 * 1024:200 * 1024 + 10] = b"( changed "
     image.write_bytes(bytes(data))
