@@ -4,11 +4,15 @@ stopped in; a block edited in the page, typed at the FORTH, FLUSHed and found on
 the disk image; a lesson's line typed by its button; an exercise's check run; the
 light theme and the largest text fit both projector sizes. Screenshots in
 build/test-artifacts/lab-program-*.png and lab-teach-*.png."""
+import asyncio
+import threading
+
 import pytest
 from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import Select
 
 from harness.analysis.listing import BLOCK_BYTES
+from harness.lab.page_client import Page
 
 from labpage import ARTIFACTS, click, js, type_line, wait_for
 from test_browser import accessibility_violations
@@ -26,6 +30,24 @@ def page(lab_server, browser):
     wait_for("the page to connect", lambda: browser.execute_script(
         "return window.lab && window.lab.connected && window.lab.perAxis.length > 0"))
     return browser
+
+
+class AnotherPage:
+    """A second page (a websocket, in a thread of its own) that holds the keyboard
+    while the block is open."""
+
+    def __init__(self, server):
+        self.loop = asyncio.new_event_loop()
+        threading.Thread(target=self.loop.run_forever, daemon=True).start()
+        self.page = self.run(Page.open(server))
+        self.run(self.page.send({"t": "take"}))
+
+    def run(self, coroutine):
+        return asyncio.run_coroutine_threadsafe(coroutine, self.loop).result(30)
+
+    def close(self):
+        self.run(self.page.close())
+        self.loop.call_soon_threadsafe(self.loop.stop)
 
 
 def shown_lines(page):
@@ -85,8 +107,20 @@ def test_a_block_edited_in_the_page_is_typed_at_the_forth_and_flushed(page, lab_
     inputs[0].send_keys(title)
     inputs[1].send_keys(body)
     page.save_screenshot(str(ARTIFACTS / "lab-program-editor.png"))
+    other = AnotherPage(lab_server)                  # the one-keyboard rule
+    try:
+        wait_for("the other page to hold the keyboard",
+                 lambda: js(page, "window.lab.keyboard.holder") and not js(
+                     page, "window.lab.keyboard.you"))
+        click(page, "#program-update")
+        note = page.find_element(By.ID, "program-note").text
+        assert "holds the keyboard: take it to type here" in note, note
+        assert "P ( squares" not in js(page, "window.lab.screen()")   # nothing typed
+    finally:
+        other.close()
+    wait_for("the keyboard free", lambda: js(page, "window.lab.keyboard.holder") is None)
     before = js(page, "window.lab.screen()").count(" ok")
-    click(page, "#program-update")
+    click(page, "#program-update")                   # nobody holds it: the page takes it
     wait_for("the editor's lines to be answered",
              lambda: js(page, "window.lab.screen()").count(" ok") >= before + 4)
     screen = js(page, "window.lab.screen()")
