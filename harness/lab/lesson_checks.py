@@ -17,6 +17,7 @@ TIMEOUT_S = 300                  # a check that takes longer is stopped and says
 SHOWN_LINES = 60                 # the tail of what a check printed, for the page
 
 HARNESS = (sys.executable, "-m", "harness")
+DISK_COPY = "copy-of-the-lab-disk.dsk"
 D2_SCRIPT = "1000 LOAD\nSet.Up.Robot\n4000 0 400 0 Abs.Move Move.Complete?\n"
 D2_MEASURE = ("from harness.analysis import trace, moves\n"
               "m = moves.find_moves(trace.read('{tmp}/d2.trace.csv').axis('X'))[0]\n"
@@ -39,12 +40,16 @@ CHECKS = {
     5: ({"square.script": SQUARE_SCRIPT},
         [HARNESS + ("run", "{tmp}/square.script", "--disk", "{disk}", "--out", "{tmp}")]),
 }
+# what a check measured that its commands leave in a file: the end of it is shown
+SHOWN_FILES = {5: ("square.transcript", 4)}     # the counters: about 0 0
 
 
 def shown(command):
-    """A command as the reader would type it (python -m harness ...)."""
-    words = ["python" if w == sys.executable else w for w in command]
-    return " ".join(w if w and " " not in w and "\n" not in w else repr(w) for w in words)
+    """A command as the reader would type it (python -m harness ..., in /tmp/ex)."""
+    words = ["python" if w == sys.executable else
+             w.format(tmp="/tmp/ex", disk=f"/tmp/ex/{DISK_COPY}")
+             for w in command]
+    return " ".join(w if w and " " not in w and "\n" not in w else f'"{w}"' for w in words)
 
 
 def tail(text, lines=SHOWN_LINES):
@@ -57,7 +62,7 @@ async def run_check(exercise, disk):
     files, commands = CHECKS[exercise]
     out, ok = [], True
     with tempfile.TemporaryDirectory(prefix=f"lab-check-{exercise}-") as tmp:
-        copy = Path(tmp) / "disk.dsk"
+        copy = Path(tmp) / DISK_COPY
         shutil.copyfile(disk, copy)                 # the lab's disk is never written here
         for name, text in files.items():
             (Path(tmp) / name).write_text(text)
@@ -79,4 +84,10 @@ async def run_check(exercise, disk):
                 out.append(f"exit status {proc.returncode}")
                 ok = False
                 break
+        if exercise in SHOWN_FILES:
+            name, lines = SHOWN_FILES[exercise]
+            path = Path(tmp) / name
+            if path.is_file():
+                out.append(f"the end of /tmp/ex/{name}:")
+                out.append(tail(path.read_text(errors="replace"), lines))
     return ok, "\n".join(out)

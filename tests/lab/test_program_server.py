@@ -81,3 +81,33 @@ def test_a_check_is_shown_as_the_reader_types_it():
     assert lesson_checks.shown(lesson_checks.CHECKS[4][1][0]) == \
         "python -m harness timing --servo idle"
     assert lesson_checks.tail("a\nb\nc", 2) == "...\nb\nc"
+
+
+SQUARE = [                      # docs/exercises.md's answer to exercise 5, lines 1-5
+    "( exercise 5: a square )",
+    ": Wait ( n -- )   0 DO  100O 177546O !",
+    "   BEGIN 177546O @ 200O AND END  LOOP ;",
+    ": Corner ( x y -- )   400 0 Abs.Move  120 Wait ;",
+    ": Square ( -- )   1600 0 Corner  1600 1600 Corner",
+    "   0 1600 Corner  0 0 Corner ;",
+]
+
+
+def test_exercise_5s_check_runs_the_students_block_from_a_copy_of_the_disk(tmp_path):
+    image = tmp_path / "robot.dsk"
+    data = bytearray(PRISTINE_DISK.read_bytes())
+    block = "".join(line.ljust(64) for line in SQUARE).ljust(1024).encode()
+    data[1100 * 1024:1101 * 1024] = block
+    image.write_bytes(bytes(data))
+    ok, text = asyncio.run(lesson_checks.run_check(5, image))
+    assert ok, text
+    assert "$ python -m harness run /tmp/ex/square.script --disk /tmp/ex/copy-of-the-lab-disk.dsk" \
+        in text and "0 failed" in text
+    counters = text.split("the end of /tmp/ex/square.transcript:")[1]
+    x, y = (int(n) for n in counters.split("Read.Counter .")[-1].split()[:2])
+    assert abs(x) < 100 and abs(y) < 100, counters          # back at the corner 0 0
+    assert image.read_bytes() == bytes(data)           # the lab's disk untouched
+    blank = tmp_path / "blank.dsk"
+    blank.write_bytes(PRISTINE_DISK.read_bytes())
+    ok, text = asyncio.run(lesson_checks.run_check(5, blank))
+    assert not ok and "undefined word: Square" in text and "exit status 1" in text
