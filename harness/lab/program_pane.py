@@ -12,6 +12,7 @@ from pathlib import Path
 
 BLOCKS = 10240                    # the RL02's blocks (forth/EDITOR.md)
 BLOCK_BYTES, LINE_CHARS = 1024, 64
+LISTED_FROM = 1000                # python -m harness listing lists blocks from 1000 on
 
 
 def block_lines(image, block):
@@ -49,6 +50,8 @@ class ProgramPane:
         code, why = [[] for _ in lines], None
         if not "".join(lines).strip():
             why = f"block {block} is blank"
+        elif block < LISTED_FROM:
+            why = f"no listing: python -m harness listing lists blocks from {LISTED_FROM} on"
         elif self.lister is None:
             why = "no listing in this lab"
         else:
@@ -56,7 +59,7 @@ class ProgramPane:
             if listed:
                 code = listed
             else:
-                why = f"no listing: {failed}".replace(str(self.image), "the lab's disk")
+                why = f"no listing: {failed}"
         message = {"t": "program", "block": block, "lines": lines, "code": code, "why": why}
         self._cache[block] = (stamp, message)
         return message
