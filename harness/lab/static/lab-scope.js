@@ -199,10 +199,10 @@ const plotBox = document.getElementById("scope-plot");
 
 function rebuildPlot() {
   if (scope.plot) scope.plot.destroy();
-  const scales = [];
+  const scales = [], colors = [];    // each scale's axis in its first channel's colour
   const list = series().map((s) => {
     const id = s.channel[0], scale = SCALE_OF[id] || id;
-    if (!scales.includes(scale)) scales.push(scale);
+    if (!scales.includes(scale)) { scales.push(scale); colors.push(CHANNEL_COLORS[s.i]); }
     return {
       label: (s.saved ? "saved " : "") + channelName(s.channel), scale, spanGaps: true,
       stroke: CHANNEL_COLORS[s.i], width: s.saved ? 1.5 : 2, dash: s.saved ? [6, 4] : undefined,
@@ -213,7 +213,7 @@ function rebuildPlot() {
   const axisStyle = { stroke: "#8b949e", grid: { stroke: "#263040", width: 1 }, ticks: { stroke: "#30363d" },
     font: '12px "DejaVu Sans", sans-serif' };
   const axes = [{ ...axisStyle, values: (u, v) => v.map((t) => `${t.toFixed(2)} s`) }].concat(
-    scales.map((scale, k) => ({ ...axisStyle, scale, show: k < 2, side: k ? 1 : 3, size: 56,
+    scales.map((scale, k) => ({ ...axisStyle, scale, show: k < 2, stroke: colors[k], side: k ? 1 : 3, size: 56,
       grid: { ...axisStyle.grid, show: k === 0 } })));
   const r = plotBox.getBoundingClientRect();
   scope.plot = new uPlot({
@@ -302,7 +302,8 @@ function drawScope() {               // lab.js's frame loop, when something chan
   const text = `${scope.readout()}\n${note()}`;
   if (text !== readoutText) {
     const [line, why] = (readoutText = text).split("\n");
-    document.getElementById("scope-readout").textContent = line;
+    const box = document.getElementById("scope-readout");
+    box.textContent = box.title = line;     // the whole line on hover where it is cut
     document.getElementById("scope-note").textContent = why;
   }
 }
