@@ -373,7 +373,10 @@ function fillChannels() {            // the channel pickers, once the hello name
 }
 scope.setChannel = (i, id, axis) => { scope.channels[i] = [id, axis]; fillChannels(); };
 const byId = (id) => document.getElementById(id);
-byId("scope-window").addEventListener("change", (e) => { if (e.target.value) scope.window = Number(e.target.value); lab.dirty = true; });
+byId("scope-window").addEventListener("change", (e) => {
+  if (e.target.value) { scope.window = Number(e.target.value); scope.zoom = null; }
+  lab.dirty = true;
+});
 byId("scope-trigger").addEventListener("change", (e) => { scope.trigger = e.target.value; lab.dirty = true; });
 byId("scope-level").addEventListener("change", (e) => { scope.level = Number(e.target.value) || 0; lab.dirty = true; });
 byId("scope-pre").addEventListener("change", (e) => { scope.pre = Number(e.target.value); lab.dirty = true; });
