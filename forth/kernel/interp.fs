@@ -54,25 +54,51 @@ VARIABLE NUM-CELLS  ( -- a ) \ 1 or 2: the number being converted
 
 \ ---- finding words: word lists and the search order ----------------------------
 \ A word list (wid) is the body of a VOCABULARY or the space WORDLIST allots:
-\ +0 +2 +4 +6 the newest LFA of each of its four chains (names of length 0, 1,
-\ 2, 3 mod 4), +10 its VOC-LINK cell, +12 the vocabulary's name field (0 for a
-\ WORDLIST). The search order is CONTEXT's cells, CONTEXT @ searched first; a
-\ wid equal to the one before it is not searched again (FORTH FORTH at boot:
-\ FORTH-79's CONTEXT then FORTH, and a vocabulary word replaces CONTEXT @).
-: CHAIN  ( voc u -- a )  3 AND 2* + ;
-: WID-FIND  ( a u wid -- nfa | 0 )  OVER CHAIN @ (FIND) ;
+\ +0 .. +16 (octal) the newest LFA of each of its 8 chains (a name's chain: prims.fs
+\ CHAIN-OFFSET, its first character and length), +20 its VOC-LINK cell, +22
+\ the vocabulary's name field (0 for a WORDLIST). The search order is CONTEXT's
+\ cells, CONTEXT @ searched first; a wid equal to the one before it is not
+\ searched again (FORTH FORTH at boot: FORTH-79's CONTEXT then FORTH, and a
+\ vocabulary word replaces CONTEXT @).
+#chains EQU #CHAINS      \ chains per word list (the metacompiler's #chains)
+#chains 2* EQU CHAIN-BYTES
+: WID>LINK  ( wid -- a )  CHAIN-BYTES + ;  \ its VOC-LINK cell
+: LINK>WID  ( a -- wid )  CHAIN-BYTES - ;
+CODE CHAIN  ( a u wid -- a u head )  \ the cell heading name a u's chain in wid
+  W S )+ MOV,  CHAIN-OFFSET @# PC JSR,  R0 W ADD,  S -) R0 MOV,  NEXT,  END-CODE
+CODE WID-FIND  ( a u wid -- nfa | 0 )  \ the newest word named a u in word list wid
+  W S )+ MOV,  S ) TST,
+  NE IF,  RP -) IP MOV,  CHAIN-OFFSET @# PC JSR,  R0 W ADD,  W R0 ) MOV,
+    WALK @# PC JSR,  IP RP )+ MOV,
+  ELSE,  W CLR,  THEN,
+  S 2 # ADD,  S ) W MOV,  NEXT,  END-CODE
+CODE SEARCH-ORDER  ( a u -- nfa | 0 )  \ in CONTEXT's #ORDER word lists, in order
+  S ) TST,  EQ IF,  S 2 # ADD,  S ) CLR,  NEXT,  THEN,
+  RP -) IP MOV,  CHAIN-OFFSET @# PC JSR,
+  RP -) R0 MOV,                          \ 6(RP): the chain's offset
+  RP -) ' #ORDER >BODY @# MOV,           \ 4(RP): word lists left
+  RP -) ' CONTEXT >BODY # MOV,           \ 2(RP): the next one's cell
+  RP -) CLR,                             \ (RP): the word list before it
+  BEGIN,  4 RP I) DEC,  PL WHILE,
+    R0 2 RP I) MOV,  W R0 )+ MOV,  2 RP I) R0 MOV,
+    W RP ) CMP,  NE IF,
+      RP ) W MOV,  W 6 RP I) ADD,  W W ) MOV,  WALK @# PC JSR,
+      NE IF,  RP 10O # ADD,  IP RP )+ MOV,  S 2 # ADD,  S ) W MOV,  NEXT,  THEN,
+    THEN,
+  REPEAT,
+  RP 10O # ADD,  IP RP )+ MOV,  S 2 # ADD,  S ) CLR,  NEXT,  END-CODE
 : SEARCH-NAME  ( a u -- nfa | 0 )  \ the locals while compiling, the search order
   STATE @ IF LOCALS-HERE @ LOCALS-AREA <> IF
     2DUP LOCAL-FIND ?DUP IF NIP NIP EXIT THEN THEN THEN
-  0 #ORDER @ 2* CONTEXT + CONTEXT ?DO  ( a u previous )
-    I @ TUCK <> IF 2 PICK 2 PICK 2 PICK WID-FIND ?DUP IF NIP NIP NIP UNLOOP EXIT THEN THEN
-  2 +LOOP DROP 2DROP 0 ;
+  SEARCH-ORDER ;
 : UMAX  ( u1 u2 -- u )  2DUP U< IF SWAP THEN DROP ;
-: NEWEST-SLOT  ( heads -- slot | 0 )  \ the cell holding the newest header
-  0 SWAP 4 0 DO
-    DUP @ IF OVER 0= IF NIP DUP ELSE OVER @ OVER @ U< IF NIP DUP THEN THEN THEN
-    2+
-  LOOP DROP ;
+CODE NEWEST-SLOT  ( heads -- slot | 0 )  \ the cell holding the newest header
+  W S ) MOV,  R3 W MOV,  R3 CHAIN-BYTES # ADD,  R0 CLR,  T CLR,
+  BEGIN,
+    W ) R0 CMP,  LO IF,  R0 W ) MOV,  T W MOV,  THEN,
+    W 2 # ADD,  R3 W CMP,
+  EQ UNTIL,
+  S ) T MOV,  NEXT,  END-CODE
 : NEWEST  ( voc -- lfa | 0 )  NEWEST-SLOT DUP IF @ THEN ;
 : NFA>XT  ( nfa -- xt 1 | xt -1 )  \ 1 when IMMEDIATE
   DUP NAME> SWAP C@ 128 AND IF 1 ELSE -1 THEN ;
@@ -167,7 +193,7 @@ VARIABLE COLON-LFA  ( -- a ) \ header of the definition being compiled
 VARIABLE LAST-XT  ( -- a ) \ xt of the newest : or :NONAME definition (RECURSE)
 : HEADER,  ( a u -- )  \ link into CURRENT, name as written
   DUP 0= IF -16 THROW THEN  DUP 31 > IF -19 THROW THEN
-  ALIGN HERE  CURRENT @ 2 PICK CHAIN  DUP @ ,  !  HERE LAST !
+  ALIGN CURRENT @ CHAIN  HERE OVER @ ,  SWAP !  HERE LAST !
   DUP C, HERE OVER ALLOT SWAP CMOVE ALIGN ;
 : CF,  ( handler opcode -- )  , , ;  \ code field JSR reg,@#handler
 4437O CONSTANT JSR-IP  ( -- op )
@@ -191,7 +217,7 @@ DODOES CONSTANT 'DODOES  ( -- a )
 : VALUE  ( x "name" -- )  CONSTANT ;  \ CORE EXT (TO stores into it)
 : TO  ( x "name" -- )  \ CORE EXT, DOUBLE EXT
   TICK >BODY STATE @ IF POSTPONE LITERAL ['] ! , ELSE ! THEN ;  IMMEDIATE
-: VOC-NAME  ( wid -- nfa | 0 )  10 + @ ;  \ 0: a WORDLIST, not a VOCABULARY
+: VOC-NAME  ( wid -- nfa | 0 )  WID>LINK 2+ @ ;  \ 0: a WORDLIST, not a VOCABULARY
 \ FORTH-79: : sets CONTEXT to CURRENT. Done only when both are vocabularies, so
 \ that word lists and search orders of standard programs stay as they set them.
 : COLON-CONTEXT  ( -- )
@@ -205,7 +231,8 @@ DODOES CONSTANT 'DODOES  ( -- a )
   LOCALS-LEAVE,  ['] EXIT ,  4 ?PAIRS  LOCALS-CLEAR  COLON-LFA @ IF REVEAL THEN  0 COLON-LFA !  POSTPONE [ ;
   IMMEDIATE COMPILE-ONLY
 : WORDLIST,  ( nfa -- wid )  \ an empty word list, linked from VOC-LINK
-  ALIGN HERE  0 , 0 , 0 , 0 ,  HERE VOC-LINK @ , VOC-LINK !  SWAP , ;
+  ALIGN HERE  CHAIN-BYTES ALLOT  DUP CHAIN-BYTES ERASE
+  HERE VOC-LINK @ , VOC-LINK !  SWAP , ;
 : VOCABULARY  ( "name" -- )  \ FORTH-79: the name replaces CONTEXT @ (immediate)
   CREATE LAST @ WORDLIST, DROP  IMMEDIATE  DOES> VOC-CONTEXT ;
 VOCABULARY FORTH  ( -- ) \ SEARCH EXT: the kernel's vocabulary

@@ -198,22 +198,26 @@ CODE FILL  ( a n c -- )  \ CORE
   T 2 S I) MOV,  W 4 S I) MOV,  ?STORE-RANGE,  R0 S )+ MOV,  T S )+ MOV,  W S )+ MOV,
   T TST,  NE IF,  BEGIN,  W )+ R0 MOVB,  T DEC,  EQ UNTIL,  THEN,  NEXT,  END-CODE
 
-\ (BELOW): a chain runs from the newest header down, so the headers above an
-\ address are skipped with one comparison each (WORD-AT, trap reports)
-CODE (BELOW)  ( a lfa -- a lfa' )  \ the chain's first header at or below a
-  R0 S ) MOV,  BEGIN,  2 S I) R0 CMP,  HI WHILE,  R0 R0 ) MOV,  REPEAT,  S ) R0 MOV,
-  NEXT,  END-CODE
-
 \ parsing helpers: with a blank delimiter any control character is a blank
 CODE SCAN  ( a u c -- a' u' )  \ first c, or the end
   EQ SCAN-LOOP,  END-CODE
 CODE SKIP  ( a u c -- a' u' )  \ first character not c, or the end
   NE SCAN-LOOP,  END-CODE
 
-\ (FIND): search one vocabulary chain, case-insensitively; smudged words
-\ never match (bit 5 stays in the compared length)
-CODE (FIND)  ( a u lfa -- nfa | 0 )
-  W S )+ MOV,  RP -) IP MOV,
+\ The dictionary search's two halves (CODE words WID-FIND SEARCH-ORDER CHAIN in
+\ interp.fs). A word list has 8 chains; a name's chain is its upper-cased first
+\ character plus twice its length, mod 8 (the metacompiler's theader hashes alike).
+\ CHAIN-OFFSET (JSR PC): R0 := the byte offset of that chain in a word list, for
+\ the name at 2(S), length (S) (at least 1)
+LABEL CHAIN-OFFSET
+  R0 2 S I) MOV,  R0 R0 ) MOVB,
+  141O # R0 CMP,  GE IF,  172O # R0 CMP,  LE IF,  R0 40O # SUB,  THEN,  THEN,
+  R0 S ) ADD,  R0 S ) ADD,  R0 #chains 1- INVERT # BIC,  R0 R0 ADD,  PC RTS,  END-CODE
+\ WALK (JSR PC): W := the name field of the first header from LFA W on (0: none)
+\ down its chain whose name is the one at 2(S), length (S), compared
+\ case-insensitively; a smudged word never matches (bit 5 stays in the compared
+\ length). Z is set when none matched. R0 T R3 IP are used.
+LABEL WALK
   W TST,  NE IF,
     BEGIN,  \ a header of another length costs 6 instructions
       R0 2 W I) MOVB,  R0 177700O # BIC,  R0 S ) CMP,
@@ -228,16 +232,14 @@ CODE (FIND)  ( a u lfa -- nfa | 0 )
           THEN,
         EQ WHILE,
           R0 DEC,
-          EQ IF,
-            W RP )+ MOV,  IP RP )+ MOV,  S 2 # ADD,  S ) W MOV,  S ) 2 # ADD,  NEXT,
-          THEN,
+          EQ IF,  W RP )+ MOV,  W 2 # ADD,  PC RTS,  THEN,
         REPEAT,
         W RP )+ MOV,
       THEN,
       W W ) MOV,
     EQ UNTIL,
   THEN,
-  IP RP )+ MOV,  S 2 # ADD,  S ) CLR,  NEXT,  END-CODE
+  PC RTS,  END-CODE
 
 \ console (DL11 at 177560): receive by interrupt into a ring of 511 characters.
 \ Flow control as a DL11 and a paper-tape reader did it (docs/console.md, "A

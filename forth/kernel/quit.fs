@@ -50,14 +50,28 @@ VARIABLE TEMP-HEAP  ( -- a ) \ HEAP then: a heap the run created keeps DICT-END
   R> SRC-ID !  R> BLK !  R> >IN !  2R> SRC 2! ;
 
 \ ---- reverse lookup: which word holds an address -----------------------------------
+\ A chain runs from the newest header down, so the headers above an address are
+\ skipped with one comparison each; a chain whose newest header is below the
+\ best found so far is not walked (WORD-AT, trap reports)
+CODE BELOW-IN  ( a wid -- lfa | 0 )  \ wid's newest header at or below a, of all its chains
+  W S )+ MOV,  R3 W MOV,  R3 CHAIN-BYTES # ADD,  T CLR,
+  BEGIN,
+    R0 W )+ MOV,
+    T R0 CMP,  HI IF,
+      BEGIN,  S ) R0 CMP,  HI WHILE,  R0 R0 ) MOV,  REPEAT,
+      T R0 CMP,  HI IF,  T R0 MOV,  THEN,
+    THEN,
+    R3 W CMP,
+  EQ UNTIL,
+  S ) T MOV,  NEXT,  END-CODE
 VARIABLE BEST  ( -- a )
-: BEST-IN  ( addr lfa -- addr )  \ one chain, newest first: its first header
-  BEGIN (BELOW) DUP WHILE      \ whose code starts at or below addr; keep the best
-    DUP 2+ NAME> 2 PICK U> 0= IF  DUP 2+ BEST @ UMAX BEST !  DROP EXIT  THEN  @
-  REPEAT DROP ;
+: BEST-IN  ( addr wid -- addr )  \ its newest word whose code starts at or below
+  >R DUP BEGIN R@ BELOW-IN ?DUP WHILE  ( addr lfa )   \ addr; keep the best
+    DUP 2+ NAME> 2 PICK U> 0= IF  2+ BEST @ UMAX BEST !  R> DROP EXIT  THEN  2-
+  REPEAT R> DROP ;
 : WORD-AT  ( addr -- nfa | 0 )  \ the word whose code or body holds addr
   0 BEST !  DUP HERE U< IF VOC-LINK @ BEGIN ?DUP WHILE   \ nothing at or above HERE
-    4 0 DO DUP 8 - I 2* + @ ROT SWAP BEST-IN SWAP LOOP @
+    DUP LINK>WID ROT SWAP BEST-IN SWAP @
   REPEAT THEN DROP BEST @ ;
 : >NAME  ( xt -- nfa | 0 )  DUP WORD-AT DUP IF TUCK NAME> <> IF DROP 0 THEN ELSE NIP THEN ;
 \ EXECUTE runs only an execution token: a code field the kernel or a defining
@@ -172,7 +186,7 @@ CREATE ERROR-TEXTS  ( -- a )
   FALSE #ORDER @ 2* CONTEXT + CONTEXT ?DO OVER I @ = OR 2 +LOOP NIP ;
 : .ELSEWHERE  ( -- )
   VOC-LINK @ BEGIN ?DUP WHILE
-    DUP 8 -  DUP VOC-NAME OVER IN-ORDER? 0= AND IF
+    DUP LINK>WID  DUP VOC-NAME OVER IN-ORDER? 0= AND IF
       WHAT 2@ 2 PICK WID-FIND IF
         ."  (a word of " DUP VOC-NAME .NAME ." : type " VOC-NAME .NAME
         ."  to select it again)" DROP EXIT

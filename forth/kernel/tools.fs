@@ -3,10 +3,11 @@
 : .S  ( -- )  \ TOOLS: the stack, deepest first
   ." <" DEPTH 0 .R ." > "  DEPTH DUP 0 ?DO DUP I - PICK . LOOP DROP ;
 VARIABLE COLUMN  ( -- a )
-CREATE CURSORS 8 ALLOT  ( -- a ) \ WORDS' place in each chain
+\ WORDS keeps its place in each chain at HERE (scratch, as WORD's buffer):
+\ the bytes a cursor array in the dictionary would take stay free
 : WORDS  ( -- )  \ TOOLS: the CONTEXT vocabulary, newest first (its chains merged)
-  0 COLUMN !  CONTEXT @ CURSORS 8 CMOVE
-  BEGIN CURSORS NEWEST-SLOT ?DUP WHILE
+  0 COLUMN !  CONTEXT @ HERE CHAIN-BYTES CMOVE
+  BEGIN HERE NEWEST-SLOT ?DUP WHILE
     DUP @ DUP 2+ C@ 32 AND 0= IF
       COLUMN @ 64 > IF CR 0 COLUMN ! THEN
       DUP 2+ DUP .NAME SPACE C@ 31 AND 1+ COLUMN +!
@@ -47,10 +48,10 @@ CREATE CURSORS 8 ALLOT  ( -- a ) \ WORDS' place in each chain
 \ ---- FORGET and MARKER -----------------------------------------------------------
 : TRIM-CHAIN  ( lfa head -- )  \ unlink chain entries at or above lfa
   BEGIN 2DUP @ SWAP U< 0= OVER @ 0<> AND WHILE DUP @ @ OVER ! REPEAT 2DROP ;
-: TRIM  ( lfa body -- )  4 0 DO 2DUP I 2* + TRIM-CHAIN LOOP 2DROP ;
+: TRIM  ( lfa body -- )  #CHAINS 0 DO 2DUP I 2* + TRIM-CHAIN LOOP 2DROP ;
 : TRIM-VOCS  ( lfa -- )  \ trim every vocabulary; drop forgotten vocabularies
   VOC-LINK BEGIN DUP @ WHILE
-    DUP @ 2 PICK U< 0= IF DUP @ @ OVER ! ELSE 2DUP @ 8 - TRIM @ THEN
+    DUP @ 2 PICK U< 0= IF DUP @ @ OVER ! ELSE 2DUP @ LINK>WID TRIM @ THEN
   REPEAT 2DROP ;
 : RESTORE-VECTORS  ( lfa -- )  \ no vector may point into forgotten code
   1000O 100O DO  \ those below 100 and 250 are the kernel's: ! refuses them

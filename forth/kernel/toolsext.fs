@@ -45,7 +45,7 @@ CODE NR>  ( -- i*x n ) ( R: i*x n -- )  \ TOOLS EXT
     THEN @
   REPEAT TRUE ;
 : TRAVERSE-WORDLIST  ( i*x xt wid -- j*x )  \ TOOLS EXT: xt ( nt -- f ) per word
-  DUP 8 + SWAP DO  I @ TRAVERSE-CHAIN 0= IF DROP UNLOOP EXIT THEN  2 +LOOP DROP ;
+  DUP CHAIN-BYTES + SWAP DO  I @ TRAVERSE-CHAIN 0= IF DROP UNLOOP EXIT THEN  2 +LOOP DROP ;
 : SYNONYM  ( "newname" "oldname" -- )  \ TOOLS EXT: code field JMP @#old
   ?END-CODE  PARSE-NAME PARSE-NAME ?NAME >R  HEADER,  JMP-ABS ,  R@ NAME> ,
   R> C@ 192 AND  LAST @ DUP C@ ROT OR SWAP C! ;

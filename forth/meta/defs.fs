@@ -42,13 +42,13 @@ get-current  meta-wl set-current
 : VAR ( n "name" -- )  t-create t, ;
 : ARRAY ( n "name" -- )  t-create 2* tallot ;
 : VOCABULARY ( "name" -- )
-  \ target body: +0..+6 heads of the four chains  +10 VOC-LINK chain  +12 its NFA;
+  \ target body: +0..+16 (octal) heads of the 8 chains  +20 VOC-LINK chain  +22 its NFA;
   \ its code is the DOES> part of the target's VOCABULARY
   close-code  parse-name
   2dup s" FORTH" ci= if tforth else tvoc-new then >r
   s" VOCABULARY" tfind dup 0= if s" VOCABULARY must be defined first" meta-error then
   m-does @ >r  2dup theader  jsr-w t, r> t,  $80 tflag
-  there r@ voc-body !  0 t, 0 t, 0 t, 0 t,  tvoc-link @ t,  there 2 - tvoc-link !  tlast-nfa @ t,
+  there r@ voc-body !  #chains 0 do 0 t, loop  tvoc-link @ t,  there 2 - tvoc-link !  tlast-nfa @ t,
   2dup r@ -rot meta-wl voc-setter  r> -rot metac-wl voc-setter ;
 : FORTH ( -- )  tforth tcontext ! ;
 : DEFINITIONS ( -- )  tcontext @ tcurrent ! ;

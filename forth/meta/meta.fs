@@ -47,16 +47,20 @@ create map-tab max-map 2* cells allot  variable #map  variable map-fd
   loop r> base !  map-fd @ close-file throw ;
 
 \ ---- target vocabularies on the host -----------------------------------------
-\ host voc: +0 host wordlist  +1..+4 the heads of its four chains (target LFA of
-\ the newest word whose name length mod 4 is 0..3)  +5 target body address of the
-\ vocabulary word (0 until defined)  +6 next host voc
-4 constant #chains
+\ host voc: +0 host wordlist  +1..+8 the heads of its 8 chains (target LFA of
+\ the newest word of each chain: name-chain)  +9 target body address of the
+\ vocabulary word (0 until defined)  +10 next host voc
+8 constant #chains   \ also the kernel's (prims.fs CHAIN-OFFSET, interp.fs): the dictionary space
+\ left at boot (issue 12: 16 KB) pays 16 bytes per word list for 8 instead of 4; 32 measured faster
+: name-chain ( addr u -- i )  \ as CHAIN-OFFSET: upper-cased first character
+  2* swap c@ upc + #chains 1- and ;   \ plus twice the length, mod 8
 0 value tvocs
-: tvoc-new ( -- voc )  wordlist  here swap , 0 , 0 , 0 , 0 , 0 , tvocs ,  dup to tvocs ;
+: tvoc-new ( -- voc )
+  wordlist  here swap ,  #chains 0 do 0 , loop  0 , tvocs ,  dup to tvocs ;
 : voc-wid ( voc -- wid ) @ ;
 : voc-heads ( voc -- a ) cell+ ;
-: voc-body ( voc -- a ) 5 cells + ;
-: voc-next ( voc -- a ) 6 cells + ;
+: voc-body ( voc -- a ) #chains 1+ cells + ;
+: voc-next ( voc -- a ) #chains 2 + cells + ;
 tvoc-new constant tforth
 variable tcurrent  tforth tcurrent !
 variable tcontext  tforth tcontext !
@@ -105,7 +109,7 @@ variable tlast-nfa  variable tlast-m
 : theader ( addr u -- )
   dup 0= if s" name expected" meta-error then
   dup 31 u> if s" name longer than 31 characters" meta-error then
-  dup 3 and cells tcurrent @ voc-heads + >r  \ the chain for this length
+  2dup name-chain cells tcurrent @ voc-heads + >r  \ the name's chain
   talign  there  r@ @ t,  r> !
   there tlast-nfa !  dup tc,  2dup bounds ?do i c@ tc, loop  talign
   2dup there -rot map-add

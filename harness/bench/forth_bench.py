@@ -4,17 +4,20 @@ SIMH counts instructions (SHOW TIME at a stop). CODE words MARK and END-MARK
 (just NEXT) carry simulator breakpoints whose actions print the time and
 continue; each benchmark is a colon definition `MARK <work> END-MARK`, so the
 difference is the work alone (plus MARK's own NEXT, measured by an empty pair
-and subtracted). Each runs at processor priority 6: the stock 11/23's line clock
+and subtracted). Each figure is printed beside the one it replaced: the kernel
+before issue 19's hashed dictionary search (main at 529275f: 4 chains per word
+list by name length, the search order walked in FORTH), measured the same way. Each runs at processor priority 6: the stock 11/23's line clock
 cannot be disabled and ticks at a host-calibrated rate, so its interrupts are held
 off to keep the counts exact. Simulated seconds use the 11/23's typical 300 000
 instructions per second (docs/design.md section 2)."""
 import re
 import sys
+import tempfile
 
 import pexpect
 
 from harness.bench.protection_cost import cost
-from harness.machine.build import RATE, ROOT
+from harness.machine.build import RATE, ROOT, fresh_disk
 from harness.machine.machine import OK, SIMULATOR, Machine
 
 
@@ -53,7 +56,19 @@ CREATE TEXT 448 ALLOT
 : B-INTERPRET QUIET TEXT! MARK TEXT 448 EVALUATE END-MARK LOUD ;
 : BUS-ERROR 160000O @ ;
 : B-TRAP QUIET MARK ['] BUS-ERROR CATCH DROP END-MARK LOUD ;
+: B-LOAD QUIET MARK 1000 LOAD END-MARK LOUD ;
 """
+
+# (label, word, instructions before issue 19's hashed dictionary search)
+BENCHMARKS = [
+    ("BYTE Sieve, 10 iterations of 8190 flags", "B-SIEVE", 9245725),
+    ("10 000 empty DO LOOP passes", "B-LOOP", 60023),
+    ("recursive Fibonacci of 20", "B-FIB", 689562),
+    ("outer interpreter: EVALUATE of 64 x '1 DROP'", "B-INTERPRET", 374960),
+    ("bus error trapped and caught by CATCH", "B-TRAP", 10123),
+    ("1000 LOAD (the paper's blocks 1000-1012)", "B-LOAD", 2075402),
+]
+WORDS_INTERPRETED = 128
 
 TIME = re.compile(r"Time:\s+(\d+)")
 
@@ -99,18 +114,11 @@ def start_counting(m, setup):
 
 
 def main():
-    with Machine(timeout=120) as m:
+    with tempfile.TemporaryDirectory() as tmp, \
+            Machine(disk=fresh_disk(tmp), timeout=120) as m:
         empty = start_counting(m, SETUP)
-        rows = []
-        for name, word in [
-            ("BYTE Sieve, 10 iterations of 8190 flags", "B-SIEVE"),
-            ("10 000 empty DO LOOP passes", "B-LOOP"),
-            ("recursive Fibonacci of 20", "B-FIB"),
-            ("outer interpreter: EVALUATE of 64 x '1 DROP'", "B-INTERPRET"),
-            ("bus error trapped and caught by CATCH", "B-TRAP"),
-        ]:
-            n = count(m, word)
-            rows.append((name, n - empty))
+        rows = [(name, count(m, word) - empty, before)
+                for name, word, before in BENCHMARKS]
         nxt = count(m, "B-NEXT") - empty
         docol = count(m, "B-DOCOL") - empty
         exit_ = count(m, "B-EXIT") - empty
@@ -124,18 +132,20 @@ def main():
         fib = m.send("20 FIB .").split()[0]
     print(f"FORTH benchmarks on {SIMULATOR.relative_to(ROOT)}, simulated seconds at "
           f"{RATE} instructions/s")
-    print(f"{'benchmark':45s} {'instructions':>14s} {'seconds':>9s}")
-    for name, n in rows:
-        print(f"{name:45s} {n:14d} {n / RATE:9.3f}")
+    print(f"{'benchmark':45s} {'instructions':>14s} {'seconds':>9s} {'before':>10s}")
+    for name, n, before in rows:
+        print(f"{name:45s} {n:14d} {n / RATE:9.3f} {before:10d}")
     print(f"  (sieve found {primes} primes per iteration; fib(20) = {fib})")
-    print(f"  (the interpreter: {rows[3][1] // 128} instructions per word, "
-          "number or name, including the dictionary search)")
+    words = rows[3]
+    print(f"  (the interpreter: {words[1] // WORDS_INTERPRETED} instructions per word, "
+          f"number or name, including the dictionary search; "
+          f"{words[2] // WORDS_INTERPRETED} before)")
     print(f"instructions per NEXT {nxt}, DOCOL {docol}, EXIT {exit_}, "
           f"call of an empty colon word {call}")
     print("anchors: polyFORTH Sieve 75 s on an 11/03, 12.5 s on an 11/60; "
           "fig-FORTH's NEXT is 2 instructions")
     print("what issue 16's checks cost (harness/bench/protection_cost.py):")
-    for key, (_, n) in zip(["sieve", "loop", "fib", "interpret"], rows):
+    for key, (_, n, _) in zip(["sieve", "loop", "fib", "interpret"], rows):
         print(cost(key, n))
     if primes != "1899" or fib != "6765":
         print("benchmark results wrong", file=sys.stderr)

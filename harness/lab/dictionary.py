@@ -1,7 +1,7 @@
 """Find FORTH words' bodies in a copy of the machine's memory (pure logic).
 
 The header layout is harness.machine.kernel_layout's; a vocabulary's body holds
-the newest LFA of each of its four chains (names by length mod 4). CREATE, VAR
+the newest LFA of each of its chains (kernel_layout.chain_of). CREATE, VAR
 and ARRAY words keep their values in the body.
 """
 from harness.machine.kernel_layout import CHAINS, LENGTH, SMUDGE, body_of
@@ -39,7 +39,7 @@ def header_name(memory, lfa):
 
 
 def headers(memory, vocabulary_body):
-    """(lfa, name, count byte) of each header in the vocabulary's four chains,
+    """(lfa, name, count byte) of each header in the vocabulary's chains,
     newest first in each chain, as far as `memory` holds them."""
     for chain in range(CHAINS):
         lfa, steps = memory.word(vocabulary_body + 2 * chain), 0
@@ -53,7 +53,7 @@ def headers(memory, vocabulary_body):
 
 def find_bodies(memory, vocabulary_body, names):
     """{name: body address} for each of `names` found (newest definition, case
-    ignored as the FORTH's own lookup does) in the vocabulary's four chains."""
+    ignored as the FORTH's own lookup does) in the vocabulary's chains."""
     wanted = {n.upper(): n for n in names}
     found = {}
     for lfa, name, count in headers(memory, vocabulary_body):

@@ -37,7 +37,7 @@ class WordIndex:
         self._sorted = sorted(self.by_address)
 
     def learn(self, memory, vocabulary_body):
-        """Add the headers of the vocabulary's four chains, from `memory`."""
+        """Add the headers of the vocabulary's chains, from `memory`."""
         for lfa, name, count in headers(memory, vocabulary_body):
             if not count & SMUDGE:
                 self.by_address.setdefault(code_field(lfa, count & LENGTH), name)

@@ -4,7 +4,7 @@ and, once blocks 1070-1078 are loaded, the ASN's trial, steps, payoff and late
 moves (watched each tick) and its 72 weights (dumped with each probe: they
 change once a step, and the LAB device watches at most 64 words).
 
-Every probe the lab asks the LAB device for the FORTH vocabulary's four chain
+Every probe the lab asks the LAB device for the FORTH vocabulary's chain
 heads and DP (HERE). When they change (a LOAD, a FORGET) it dumps the dictionary,
 finds the servo's words (block 1000's arrays and Dir, defined above the kernel's FENCE) and watches their cells.
 """
@@ -24,7 +24,7 @@ def signed(word):
 
 class ServoWatch:
     def __init__(self, symbols):
-        self.vocabulary = symbols["FORTH"] + BODY    # its four chain heads
+        self.vocabulary = symbols["FORTH"] + BODY    # its chain heads
         self.dp = symbols["DP"] + BODY
         self.fence = symbols["FENCE"] + BODY      # the kernel ends here: its STATE is not block 1000's
         self.memory = Memory()
@@ -36,7 +36,7 @@ class ServoWatch:
 
     def probe(self):
         """The commands that read the chain heads and HERE, and the dumped arrays."""
-        return [f"dump {self.vocabulary:o} 4", f"dump {self.fence:o} 1",
+        return [f"dump {self.vocabulary:o} {CHAINS}", f"dump {self.fence:o} 1",
                 f"dump {self.dp:o} 1"] + [f"dump {self.found[name]:o} {n}"
                                           for name, n in DUMPED.items() if name in self.found]
 

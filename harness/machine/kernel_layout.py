@@ -18,7 +18,7 @@ from harness.machine.build import KERNEL_MAP
 
 BODY = 4                  # code field to data: >BODY
 SMUDGE, LENGTH = 0o40, 0o37
-CHAINS = 4                # a vocabulary's body: the newest LFA of each chain (length mod 4)
+CHAINS = 8                # a vocabulary's body: the newest LFA of each chain (chain_of)
 _MAP_LINE = re.compile(r"[0-7]+")
 
 
@@ -64,6 +64,16 @@ def entry(path=KERNEL_MAP):
         return read_kernel_map(path).get("ENTRY")
     except KernelMapError:
         return None
+
+
+def chain_of(name):
+    """The chain of a word list that a header named `name` is linked into: its
+    upper-cased first character plus twice its length, mod CHAINS (8) (the kernel's
+    CHAIN-OFFSET, the metacompiler's name-chain)."""
+    first = name.encode("latin-1")[0]
+    if ord("a") <= first <= ord("z"):
+        first -= 32
+    return (first + 2 * len(name)) % CHAINS
 
 
 def code_field(lfa, length):

@@ -216,8 +216,8 @@ def test_tools_name_tokens_synonym_traverse(forth):
                " FORTH-WORDLIST SET-CURRENT")
     forth.send(": SHOW ( nt -- f ) NAME>STRING TYPE SPACE TRUE ;")
     shown = forth.send("' SHOW WL TRAVERSE-WORDLIST").split()
-    assert sorted(shown) == ["AA", "AA", "BBB"] and shown.index("AA") < shown.index("BBB") \
-        or shown == ["AA", "AA", "BBB"]
+    # every word once; the order is the word list's chains' (Forth-2012 leaves it open)
+    assert sorted(shown) == ["AA", "AA", "BBB"]
     forth.send(": FIRST ( n nt -- nt false ) NIP FALSE ;")
     forth.send(': AA-NT 0 ' + "['] FIRST WL TRAVERSE-WORDLIST ;")
     assert forth.send("AA-NT NAME>INTERPRET EXECUTE .") in ("3 ", "2 ")

@@ -2,6 +2,7 @@
 FORGET/MARKER and interrupt vectors, the banner."""
 import re
 
+from harness.machine.kernel_layout import chain_of
 from harness.machine.machine import KERNEL
 from harness.machine.scripted_machine import read_kernel_map
 
@@ -208,3 +209,35 @@ def test_ring_overflow_is_reported_when_the_terminal_ignores_xoff(forth):
     forth.child.send(".( in step)\r")
     forth.child.expect(r"in step ok\r\n")
     assert forth.send("2 2 + .") == "4 "
+
+
+def test_hashed_chains_lookup(forth):
+    """Issue 19: a word list keeps 32 chains, a name's chain picked by its
+    upper-cased first character and its length (harness.machine.kernel_layout's
+    chain_of, the kernel's CHAIN-OFFSET): names sharing a chain, names typed in
+    another case, a WORDLIST's SEARCH-WORDLIST, WORDS and FORGET across chains."""
+    assert chain_of("AXY") == chain_of("cq")  # 'A'+6 = 'C'+4: one chain
+    forth.send("MARKER HASHED")
+    forth.send(": AXY 1 ; : AXZ 2 ; : cq 3 ; : Q 4 ;")
+    assert forth.send("AXY . axz . CQ . q .") == "1 2 3 4 "
+    assert forth.send("1 dup + . 5 6 Swap drop .") == "2 6 "  # kernel words, any case
+    for name in ("AXY", "AXZ", "cq", "Q", "DUP", "SEARCH-WORDLIST", "."):
+        # each newest header heads the chain chain_of names (DUP: below ours)
+        chain = numbers(forth.send(f'S" {name}" FORTH-WORDLIST CHAIN FORTH-WORDLIST - . 2DROP'))
+        assert chain == [2 * chain_of(name)]
+    assert forth.send("FORTH-WORDLIST 2 chain_of_cq * + @ 2+ COUNT 31 AND TYPE".replace(
+        "chain_of_cq", str(chain_of("cq")))) == "cq"
+    assert forth.send("WORDS").startswith("Q cq AXZ AXY HASHED ")
+    forth.send("WORDLIST CONSTANT WL  WL SET-CURRENT")
+    forth.send(": AXY 10 ; : BQ 20 ; FORTH-WORDLIST SET-CURRENT")
+    assert forth.send('S" axy" WL SEARCH-WORDLIST . EXECUTE .') == "-1 10 "
+    assert forth.send('S" CQ" WL SEARCH-WORDLIST .') == "0 "
+    assert forth.send('S" " WL SEARCH-WORDLIST .') == "0 "
+    forth.send("HASHED")
+    for name in ("AXY", "AXZ", "cq", "Q", "WL"):
+        assert "undefined word" in forth.reply(name).error
+    assert forth.send("1 dup + .") == "2 "
+
+
+def numbers(text):
+    return [int(n) for n in text.split()]

@@ -2,6 +2,7 @@
 servo_watch.py), on headers laid out as forth/README.md describes them."""
 from harness.lab.dictionary import Memory, find_bodies
 from harness.lab.servo_watch import ORIGIN, ServoWatch, signed
+from harness.machine.kernel_layout import CHAINS, chain_of
 
 VOCABULARY = 0o20470
 
@@ -12,7 +13,7 @@ class Dictionary:
     def __init__(self, start=0o50000):
         self.memory = Memory()
         self.here = start
-        self.heads = [0, 0, 0, 0]
+        self.heads = [0] * CHAINS
 
     def byte(self, address, value):
         word = self.memory.word(address) or 0
@@ -20,7 +21,7 @@ class Dictionary:
         self.memory.store(address & ~1, [(word & ~(0o377 << shift)) | (value << shift)])
 
     def header(self, name, flags=0, body_words=4):
-        chain = len(name) % 4
+        chain = chain_of(name)
         lfa = self.here
         self.memory.store(lfa, [self.heads[chain]])
         self.byte(lfa + 2, len(name) | flags)
@@ -48,7 +49,7 @@ def test_find_bodies_newest_first_case_ignored_smudged_skipped():
 def test_a_broken_chain_ends_the_walk():
     d = Dictionary()
     d.header("Dir")
-    d.memory.store(VOCABULARY + 2 * 3, [0o77776])          # into memory never dumped
+    d.memory.store(VOCABULARY + 2 * chain_of("Dir"), [0o77776])          # into memory never dumped
     assert find_bodies(d.memory, VOCABULARY, ["Dir"]) == {}
 
 
@@ -64,7 +65,7 @@ def test_servo_watch_dumps_the_dictionary_when_it_changes_and_watches_by_name():
     d.header("State")
     direction = d.header("Dir", body_words=1)
     watch = ServoWatch(symbols())
-    assert watch.probe() == ["dump 20470 4", "dump 6462 1", "dump 6344 1"]
+    assert watch.probe() == ["dump 20470 8", "dump 6462 1", "dump 6344 1"]
     assert watch.on_memory(VOCABULARY, d.heads) == []
     assert watch.on_memory(0o6462, [fence]) == []
     command = watch.on_memory(0o6344, [d.here])
