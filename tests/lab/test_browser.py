@@ -72,6 +72,8 @@ def test_a_move_shows_on_the_robot_and_the_scope(page):
     assert scope["steps"] == [[0, 800]]               # Desire.Pos: one step, at the move
     assert scope["step_at"] > scope["start"]          # inside the window, with history before it
     assert min(scope["counter"]) < 50 and max(scope["counter"]) > 700   # X's counter moved
+    low, high = js(page, "[window.lab.scope.plot.scales.counts.min, window.lab.scope.plot.scales.counts.max]")
+    assert low <= min(scope["counter"]) and max(scope["counter"]) <= high   # all of it in sight
 
 
 def scope_after_the_move(page):
@@ -127,6 +129,10 @@ def test_the_scope_cursors_csv_and_overlay(page, tmp_path):
     saved = js(page, "window.lab.scope.plot.data[5].filter(v => v !== null)")   # saved X counter
     assert min(saved) < 50 and max(saved) > 700
     assert "dashed: saved.trace.csv" in page.find_element(By.ID, "scope-note").text
+    page.execute_script("return new Promise(r => setTimeout(r, 300))")
+    low, high = js(page, "[window.lab.scope.plot.scales.counts.min, window.lab.scope.plot.scales.counts.max]")
+    shown = [v for v in js(page, "window.lab.scope.plot.data[1]") + saved if v is not None]
+    assert low <= min(shown) and max(shown) <= high                 # in sight, live and saved
     click(page, "#freeze")                                          # live again
     assert js(page, "window.lab.scope.frozen") is None
 
@@ -195,6 +201,9 @@ def test_the_page_fits_both_projectors_without_scrolling(page, width, height):
         header = js(page, "[...document.querySelectorAll('header button')]"
                           ".map(b => b.getBoundingClientRect().right)")
         assert max(header) <= width, "a header button is cut off"
+        low, high = js(page, "[window.lab.scope.plot.scales.counts.min, window.lab.scope.plot.scales.counts.max]")
+        shown = [v for v in js(page, "window.lab.scope.plot.data[1]") if v is not None]
+        assert low <= min(shown) and max(shown) <= high     # the scope's counts all in sight
         page.save_screenshot(str(ARTIFACTS / f"lab-{width}.png"))
         violations = accessibility_violations(page)
         assert not [v for v in violations if v[1] in ("serious", "critical")], violations

@@ -296,8 +296,8 @@ function drawScope() {               // lab.js's frame loop, when something chan
   scope.data = [x].concat(ys);
   scope.view = [start, end];
   u.batch(() => {
-    u.setData(scope.data, false);
-    u.setScale("x", { min: start, max: end });
+    u.setData(scope.data);             // each y scale fitted to what is shown now,
+    u.setScale("x", { min: start, max: end });   // the time axis to the window
   });
   const text = `${scope.readout()}\n${note()}`;
   if (text !== readoutText) {
