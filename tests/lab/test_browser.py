@@ -41,7 +41,9 @@ def test_a_move_shows_on_the_robot_and_the_scope(page):
     click(page, "#power")                            # the servo holds the axes: rack on
     wait_for("the amplifiers on", lambda: js(page, "window.lab.status.power") == "on")
     power = page.find_element(By.ID, "power")     # labelled with what a click does
-    assert power.text == "Turn amps off" and power.get_attribute("aria-pressed") == "true"
+    wait_for("the switch relabelled (at the page's next frame)",
+             lambda: power.text == "Turn amps off")
+    assert power.get_attribute("aria-pressed") == "true"
     robot_before = js(page, "document.getElementById('robot').toDataURL()")
     start = js(page, "window.lab.latest.map(r => r[5])")
     click(page, '#speeds button[data-speed="real"]')  # the scope's 30 s keep the whole move
