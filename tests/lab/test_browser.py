@@ -135,6 +135,16 @@ def test_the_scope_cursors_csv_and_overlay(page, tmp_path):
     low, high = js(page, "[window.lab.scope.plot.scales.counts.min, window.lab.scope.plot.scales.counts.max]")
     shown = [v for v in js(page, "window.lab.scope.plot.data[1]") + saved if v is not None]
     assert low <= min(shown) and max(shown) <= high                 # in sight, live and saved
+    assert js(page, "window.lab.scope.decimated")                   # 30 s: more rows than pixels,
+    assert "min/max of" in page.find_element(By.ID, "scope-note").text   # and it says so
+    page.execute_script("window.lab.scope.plot.setSelect({left: 100, width: 200, top: 0, height: 10})")
+    zoom = wait_for("the zoom", lambda: js(page, "window.lab.scope.view") != view
+                    and js(page, "window.lab.scope.view"))
+    assert view[0] < zoom[0] < zoom[1] < view[1] and zoom[1] - zoom[0] < 15   # the dragged span
+    click(page, "#pan-back")                                        # half a span back
+    wait_for("the pan", lambda: js(page, "window.lab.scope.view") != zoom)
+    back = js(page, "window.lab.scope.view")
+    assert abs((zoom[0] - back[0]) - (zoom[1] - zoom[0]) / 2) < 1e-6
     click(page, "#freeze")                                          # live again
     assert js(page, "window.lab.scope.frozen") is None
 
