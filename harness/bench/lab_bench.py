@@ -26,16 +26,22 @@ WINDOW_S = 10.0
 DEVICE_ONLY = "attach lab /dev/null\nset lab speed=0\n"
 
 
-def browser_pids():
-    """Every chromium process (the headless page's renderer, GPU and browser)."""
-    pids = []
+def browser_pids(driver):
+    """The chromium processes of this bench's own headless page: those under its
+    chromedriver (other sessions' browsers on a shared host are not ours)."""
+    parents = {}
     for stat in Path("/proc").glob("[0-9]*/stat"):
         try:
-            if "(chromium" in stat.read_text():
-                pids.append(int(stat.parent.name))
+            text = stat.read_text()
         except OSError:
-            pass
-    return pids
+            continue
+        parents[int(stat.parent.name)] = (int(text.rsplit(")", 1)[1].split()[1]), "(chromium" in text)
+    ours, grew = {driver.service.process.pid}, True
+    while grew:
+        more = {pid for pid, (parent, _) in parents.items() if parent in ours} - ours
+        ours |= more
+        grew = bool(more)
+    return sorted(pid for pid in ours if parents.get(pid, (0, False))[1])
 
 
 def typed(page, line):
@@ -79,7 +85,7 @@ class Lab:
             time.sleep(0.05)
         for line in workload.SETUP + (workload.DEFINE,):
             typed(self.page, line)
-        self.server = {"server": [self.process.proc.pid], "chromium": browser_pids()}
+        self.server = {"server": [self.process.proc.pid], "chromium": browser_pids(self.page)}
         self.pids = {"simulator": [self.process.simulator_pid()], **self.server}
 
     def real_pace(self):

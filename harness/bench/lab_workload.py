@@ -28,8 +28,11 @@ SIM_TIME = re.compile(r"Time:\s+(\d+)")
 
 
 def cpu_seconds(pid):
-    """User + system CPU seconds of one process."""
-    fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+    """User + system CPU seconds of one process; None once it has exited."""
+    try:
+        fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+    except OSError:
+        return None
     return sum(int(f) for f in fields[11:13]) / TICKS_PER_S
 
 
@@ -46,12 +49,13 @@ class Run:
 def timed(pids, work):
     """Run work() (it returns the wall seconds it measured itself, or None for
     the host's); the CPU each of `pids` ({name: [pid, ...]}) used meanwhile."""
-    def used():
-        return {name: sum(cpu_seconds(p) for p in group) for name, group in pids.items()}
+    def used():                       # per process: one that exits meanwhile is left out
+        return {p: cpu_seconds(p) for group in pids.values() for p in group}
     before, start = used(), time.monotonic()
     wall = work() or time.monotonic() - start
     after = used()
-    return Run(wall, {name: after[name] - before[name] for name in pids})
+    return Run(wall, {name: sum(after[p] - before[p] for p in group
+                                if None not in (before[p], after[p])) for name, group in pids.items()})
 
 
 def best(runs):

@@ -50,7 +50,8 @@ TO_PAGE = {
               "con": str, "keyboard": dict},
     "con": {"d": str},                                   # console output
     "data": {"rows": list, "status": dict, "servo": dict,
-             "panel": Rule(dict, nullable=True)},         # the 11/23's front panel
+             "panel": Rule(dict, nullable=True),          # the 11/23's front panel
+             "ticks": list},                              # [time_s, words] where they changed
     "history": {"rows": list},                           # the instructions before a breakpoint
     "keyboard": {"holder": Rule(str, nullable=True), "you": bool},
     "input": {"waiting": int, "room": int},              # answer to `key`: the queue

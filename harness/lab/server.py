@@ -24,6 +24,7 @@ from harness.lab.front_panel import PANEL_WORDS, WordIndex, panel
 from harness.lab.program_pane import ProgramPane
 from harness.lab.rack_hint import RackHint
 from harness.lab.servo_watch import PER_AXIS, SINGLE, ServoWatch
+from harness.lab.word_history import WordHistory
 from harness.lab.session import SPEEDS, Simulator
 from harness.machine.build import BUILD
 from harness.machine.console_session import quiet_stdout
@@ -35,12 +36,15 @@ VENDOR = {  # URL name -> file installed by `npm ci` (mk/lab.mk)
     "xterm.js": "@xterm/xterm/lib/xterm.js",
     "xterm.css": "@xterm/xterm/css/xterm.css",
     "addon-fit.js": "@xterm/addon-fit/lib/addon-fit.js",
+    "uplot.js": "uplot/dist/uPlot.iife.min.js",            # the scope (lab-scope.js)
+    "uplot.css": "uplot/dist/uPlot.min.css",
 }
 FRAME_S = 1 / 30                 # how often plant rows and the servo's words go out
 FULL_SPEED_FRAME_S = 1 / 10      # at full speed: snapshots anyway, and Chromium's drawing
                                  # would take the simulator's core (docs/lab.md, cost)
 PROBE_S = 1.0                    # how often the dictionary's heads are looked at
 ROWS_PER_FRAME = 400             # more than this (fast runs) are thinned per axis
+TICKS_PER_FRAME = 100            # changes of the watched words per frame (word_history.py)
 SCROLLBACK = 1 << 17
 SHELL = "the shell"
 TAKE_KEY = b"\x14"               # ^T in the shell: take the keyboard
@@ -71,6 +75,7 @@ class Lab:
         self.status = {"time": 0.0, "tick": 0, "state": "run", "speed": speed, "power": "off",
                        "waiting": 0}
         self.servo = {}
+        self.ticks = WordHistory(20 * TICKS_PER_FRAME)   # the words' changes, for the scope
         self.sent = None                 # the status and servo words the pages last had
         self.done = asyncio.Event()
         self.safe = None
@@ -118,6 +123,7 @@ class Lab:
         elif row.kind == "W":
             self.status["time"], self.status["tick"], words = words_of(row)
             self.servo = self.watch.values(words)
+            self.ticks.add(self.status["time"], self.servo)
             hint = self.rack_hint.update(self.status["power"], self.status["time"], self.servo)
             if hint:
                 self.on_console(f"\r\n{hint}\r\n".encode())
@@ -214,12 +220,13 @@ class Lab:
         while not self.done.is_set():
             await asyncio.sleep(frame_interval(self.status["speed"]))
             rows, self.rows = thin(self.rows, ROWS_PER_FRAME), []
+            ticks = self.ticks.take(TICKS_PER_FRAME)
             self.status["waiting"] = self.sim.waiting()
             self.status["prompt"] = self.sim.watcher.at_simh     # SIMH's sim>: stopped
             state = json.dumps([self.status, self.servo, self.panel])
-            if self.pages and news(rows, state, self.sent):
+            if self.pages and news(rows + ticks, state, self.sent):
                 self.broadcast({"t": "data", "rows": rows, "status": self.status,
-                                "servo": self.servo, "panel": self.panel})
+                                "servo": self.servo, "panel": self.panel, "ticks": ticks})
                 self.sent = state
 
     async def probes(self):

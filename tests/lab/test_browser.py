@@ -70,14 +70,83 @@ def test_a_move_shows_on_the_robot_and_the_scope(page):
     assert abs(origin[0] - (x[5] - x[6])) < 1.5     # the counter is the position, whole
     click(page, "#pause")
     wait_for("the pause", lambda: js(page, "window.lab.status.state") == "pause")
-    click(page, '#windows button[data-window="30"]')
-    for axis in (0, 1, 2):                           # the scope's window holds the move
-        click(page, f'#axes button[data-axis="{axis}"]')
-        counters = js(page, "windowRows().rows.map(r => r[6])")
-        assert min(counters) < 50 and max(counters) > 350
-    csv = js(page, "window.lab.csv()")
-    assert csv.startswith(",".join(COLUMNS) + "\n") and ",Z," in csv   # the gripper's too
-    assert parse_rows(csv.splitlines(), "the page's CSV")          # a plant trace, as it says
+    scope = scope_after_the_move(page)
+    assert scope["steps"] == [[0, 800]]               # Desire.Pos: one step, at the move
+    assert scope["step_at"] > scope["start"]          # inside the window, with history before it
+    assert min(scope["counter"]) < 50 and max(scope["counter"]) > 700   # X's counter moved
+    low, high = js(page, "[window.lab.scope.plot.scales.counts.min, window.lab.scope.plot.scales.counts.max]")
+    assert low <= min(scope["counter"]) and max(scope["counter"]) <= high   # all of it in sight
+
+
+def scope_after_the_move(page):
+    """The scope's uPlot data after the move, 30 s window: CH1 X counter, CH2 X Desire.Pos."""
+    page.execute_script("document.getElementById('scope-window').value = '30';"
+                        "document.getElementById('scope-window').dispatchEvent(new Event('change'))")
+    click(page, "#freeze")
+    wait_for("the frozen window", lambda: js(page, "window.lab.scope.view[1]") ==
+             js(page, "window.lab.scope.frozen.end"))
+    return js(page, """(() => {
+      const s = window.lab.scope, d = s.plot.data, steps = [];
+      let at = null;
+      for (let i = 1; i < d[0].length; i++)
+        if (d[2][i] !== null && d[2][i - 1] !== null && d[2][i] !== d[2][i - 1]) {
+          steps.push([d[2][i - 1], d[2][i]]); at = d[0][i]; }
+      return { steps, step_at: at, start: d[0][0], counter: d[1].filter(v => v !== null) };
+    })()""")
+
+
+def test_the_scope_cursors_csv_and_overlay(page, tmp_path):
+    """Frozen since the move: two cursors read the move's Δt and Δcounts; the CSV is the
+    window's samples; a saved run's trace file is overlaid, dashed."""
+    view = js(page, "window.lab.scope.view")
+    data = js(page, "window.lab.scope.plot.data")
+    at = next(t for t, a, b in zip(data[0][1:], data[2], data[2][1:]) if a is not None and a != b)
+    page.execute_script(f"window.lab.scope.setCursors({at - 0.5}, {at + 3})")
+    wait_for("the readout", lambda: "Δt 3.5000 s" in
+             page.find_element(By.ID, "scope-readout").text)
+    readout = page.find_element(By.ID, "scope-readout").text
+    assert "CH2 0 → 800 (Δ 800)" in readout, readout      # Desire.Pos's step
+    moved = int(readout.split("CH1 ")[1].split("(Δ ")[1].split(")")[0])
+    assert 700 < moved < 900, readout                               # the counter followed
+    assert js(page, "window.lab.scope.view") == view                # Freeze held it
+    csv = js(page, "window.lab.scope.csv()").splitlines()
+    assert csv[0] == "time_s,X counter,X Desire.Pos,X vel,X dac"
+    rows = [line.split(",") for line in csv[1:]]
+    assert view[0] <= float(rows[0][0]) and float(rows[-1][0]) <= view[1]
+    held = [r[2] for r in rows]                                     # the step, held (empty
+    assert set(held) - {""} == {"0", "800"} and held[-1] == "800"   # before 1000 LOAD)
+    # a saved run: this page's own move, as the plant trace python -m harness run writes
+    trace = tmp_path / "saved.trace.csv"
+    trace.write_text(js(page, """(() => {
+      const cols = Object.keys(ROW), rows = [].concat(...window.lab.traces)
+        .sort((a, b) => a[0] - b[0] || a[1] - b[1]);
+      return cols.join(',') + '\\n' + rows.map(r => cols.map(c => c === 'axis' ? AXES[r[ROW.axis]]
+        : r[ROW[c]]).join(',')).join('\\n') + '\\n'; })()"""))
+    assert parse_rows(trace.read_text().splitlines(), "the page's rows")   # a plant trace
+    for field, value in (("scope-trigger", "rise"), ("scope-level", "400")):   # both runs
+        page.execute_script(f"const f = document.getElementById('{field}'); f.value = '{value}';"
+                            "f.dispatchEvent(new Event('change'))")         # aligned at 400
+    page.find_element(By.ID, "scope-overlay").send_keys(str(trace))
+    wait_for("the overlay", lambda: js(page, "window.lab.scope.overlay && window.lab.scope.plot.data.length") == 8)
+    saved = js(page, "window.lab.scope.plot.data[5].filter(v => v !== null)")   # saved X counter
+    assert min(saved) < 50 and max(saved) > 700
+    assert "dashed: saved.trace.csv" in page.find_element(By.ID, "scope-note").text
+    page.execute_script("return new Promise(r => setTimeout(r, 300))")
+    low, high = js(page, "[window.lab.scope.plot.scales.counts.min, window.lab.scope.plot.scales.counts.max]")
+    shown = [v for v in js(page, "window.lab.scope.plot.data[1]") + saved if v is not None]
+    assert low <= min(shown) and max(shown) <= high                 # in sight, live and saved
+    assert js(page, "window.lab.scope.decimated")                   # 30 s: more rows than pixels,
+    assert "min/max of" in page.find_element(By.ID, "scope-note").text   # and it says so
+    page.execute_script("window.lab.scope.plot.setSelect({left: 100, width: 200, top: 0, height: 10})")
+    zoom = wait_for("the zoom", lambda: js(page, "window.lab.scope.view") != view
+                    and js(page, "window.lab.scope.view"))
+    assert view[0] < zoom[0] < zoom[1] < view[1] and zoom[1] - zoom[0] < 15   # the dragged span
+    click(page, "#pan-back")                                        # half a span back
+    wait_for("the pan", lambda: js(page, "window.lab.scope.view") != zoom)
+    back = js(page, "window.lab.scope.view")
+    assert abs((zoom[0] - back[0]) - (zoom[1] - zoom[0]) / 2) < 1e-6
+    click(page, "#freeze")                                          # live again
+    assert js(page, "window.lab.scope.frozen") is None
 
 
 def test_pause_holds_simulated_time_and_step_is_one_tick(page):
@@ -90,8 +159,8 @@ def test_pause_holds_simulated_time_and_step_is_one_tick(page):
     stepped = js(page, "window.lab.status")
     assert stepped["state"] == "pause"
     assert abs(stepped["time"] - held["time"] - 1 / 60) < 2e-6
-    click(page, '#axes button[data-axis="0"]')       # x's hunting, tick by tick
-    click(page, '#windows button[data-window="2"]')
+    page.execute_script("document.getElementById('scope-window').value = '2';"   # x hunting,
+                        "document.getElementById('scope-window').dispatchEvent(new Event('change'))")
     page.save_screenshot(str(ARTIFACTS / "lab.png"))
     textarea = page.find_element(By.CSS_SELECTOR, "#terminal textarea")
     textarea.send_keys("1 1 + .")                    # typed while paused: shown, waiting
@@ -144,6 +213,9 @@ def test_the_page_fits_both_projectors_without_scrolling(page, width, height):
         header = js(page, "[...document.querySelectorAll('header button')]"
                           ".map(b => b.getBoundingClientRect().right)")
         assert max(header) <= width, "a header button is cut off"
+        low, high = js(page, "[window.lab.scope.plot.scales.counts.min, window.lab.scope.plot.scales.counts.max]")
+        shown = [v for v in js(page, "window.lab.scope.plot.data[1]") if v is not None]
+        assert low <= min(shown) and max(shown) <= high     # the scope's counts all in sight
         page.save_screenshot(str(ARTIFACTS / f"lab-{width}.png"))
         violations = accessibility_violations(page)
         assert not [v for v in violations if v[1] in ("serious", "critical")], violations

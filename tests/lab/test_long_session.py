@@ -41,12 +41,12 @@ def test_a_reload_keeps_the_console_and_the_session(page, lab_server):
 
 def test_freeze_holds_the_scope_while_the_run_goes_on(page):
     click(page, "#freeze")
-    frozen = js(page, "windowRows().end")
+    frozen = js(page, "window.lab.scope.view")
     start = js(page, "window.lab.status.time")
     wait_for("time to go on", lambda: js(page, "window.lab.status.time") > start + 0.5)
-    assert js(page, "windowRows().end") == frozen
+    assert js(page, "window.lab.scope.view") == frozen
     click(page, "#freeze")
-    assert js(page, "window.lab.frozenAt") is None
+    assert js(page, "window.lab.scope.frozen") is None
 
 
 def test_sim_prompt_from_the_page(page):

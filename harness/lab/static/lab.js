@@ -24,7 +24,7 @@ const send = (message) => socket.readyState === 1 && socket.send(JSON.stringify(
 const lab = {                      // everything the page knows; window.lab for tests
   stops: {}, status: { time: 0, tick: 0, state: "run", speed: "real", power: "off" },
   servo: {}, perAxis: [], single: [], traces: [], latest: [],
-  rowsSeen: 0, frozenAt: null, axis: 0, window: 2, ended: false, connected: false, dirty: true,
+  rowsSeen: 0, ended: false, connected: false, dirty: true,
   keyboard: { holder: null, you: false }, outbox: "", room: 4096, errors: [],
 };
 window.lab = lab;
@@ -114,6 +114,7 @@ socket.onmessage = (event) => {
     Object.assign(lab, { stops: m.stops, perAxis: m.per_axis, single: m.single, status: m.status });
     term.write(m.con);
     buildTable();
+    scope.start();                   // lab-scope.js: its channels, from the plant's columns
     takeKeyboard(m.keyboard);
     lab.dirty = true;
   } else if (m.t === "keyboard") takeKeyboard(m);
@@ -163,6 +164,7 @@ function takeData(m) {
     lab.latest[row[ROW.axis]] = row;
     lab.rowsSeen++;
   }
+  scopeTake(m);                      // lab-scope.js: the words' changes
   const cutoff = lab.status.time - KEEP_S;
   for (const trace of lab.traces) {
     let drop = 0;
@@ -255,132 +257,7 @@ function units(axis, counts) {
 
 // ---- the robot: lab-robot.js ---------------------------------------------------------
 
-// ---- the scope ---------------------------------------------------------------------------
-const STRIPS = [
-  { title: "position (counts)", series: [["pos", "plant", "#58a6ff"]] },
-  { title: "counter (counts)", series: [["counter", "counter", "#79c0ff"]], target: true },
-  { title: "velocity (counts/s)", series: [["vel", "actual", "#3fb950"], ["vcmd", "commanded", "#ff7b72"]] },
-  { title: "DAC code", series: [["dac", "code", "#d29922"]], steps: true },
-];
-
-function windowRows() {
-  const end = lab.frozenAt !== null ? lab.frozenAt : lab.status.time;
-  const rows = lab.traces[lab.axis].filter((r) => r[ROW.time_s] >= end - lab.window && r[ROW.time_s] <= end);
-  return { rows, end, start: end - lab.window };
-}
-
-function drawScope() {
-  const { g, w, h } = sized(document.getElementById("scope"));
-  g.clearRect(0, 0, w, h);
-  const { rows, start, end } = windowRows();
-  const left = 78, right = w - 10, stripH = (h - 26) / STRIPS.length;
-  const tx = (t) => left + (t - start) / (end - start) * (right - left);
-  STRIPS.forEach((strip, i) => {
-    const top = i * stripH + 4, bottom = top + stripH - 8;
-    const values = [];
-    for (const r of rows) for (const [key] of strip.series) values.push(r[ROW[key]]);
-    const want = strip.target ? goal(lab.axis) : null;
-    if (want !== null) values.push(want);
-    let lo = Math.min(...values), hi = Math.max(...values);
-    if (!values.length) { lo = -1; hi = 1; }
-    if (hi - lo < 4) { lo -= 2; hi += 2; }
-    const pad = (hi - lo) * 0.08; lo -= pad; hi += pad;
-    const ty = (v) => bottom - (v - lo) / (hi - lo) * (bottom - top);
-    g.fillStyle = "#0b1220"; g.fillRect(left, top, right - left, bottom - top);
-    drawTicks(g, start, end, tx, top, bottom, i === STRIPS.length - 1);
-    g.strokeStyle = "#30363d"; g.lineWidth = 1;
-    if (lo < 0 && hi > 0) { g.beginPath(); g.moveTo(left, ty(0)); g.lineTo(right, ty(0)); g.stroke(); }
-    if (want !== null) {
-      g.setLineDash([8, 6]); g.strokeStyle = "#f0883e"; g.lineWidth = 2;
-      g.beginPath(); g.moveTo(left, ty(want)); g.lineTo(right, ty(want)); g.stroke(); g.setLineDash([]);
-    }
-    for (const [key, , color] of strip.series) {
-      g.strokeStyle = color; g.lineWidth = 2; g.beginPath();
-      rows.forEach((r, k) => {
-        const X = tx(r[ROW.time_s]), Y = ty(r[ROW[key]]);
-        if (k === 0 || r[ROW.time_s] - rows[k - 1][ROW.time_s] > GAP_S) g.moveTo(X, Y);  // ticks not reported
-        else if (strip.steps || key === "counter") { g.lineTo(X, ty(rows[k - 1][ROW[key]])); g.lineTo(X, Y); }
-        else g.lineTo(X, Y);
-      });
-      g.stroke();
-    }
-    label(g, hi.toFixed(0), left - 6, top + 12, "#8b949e", "right", 12);
-    label(g, lo.toFixed(0), left - 6, bottom, "#8b949e", "right", 12);
-    const legend = [[`${AXES[lab.axis]} ${strip.title}`, COLORS[lab.axis], 14]].concat(
-      strip.series.concat(want !== null ? [[0, "Desire.Pos", "#f0883e"]] : [])
-        .map(([, name, color]) => [`\u2014 ${name}`, color, 13]));
-    let lx = left + 8, width = 0;
-    for (const [text, , size] of legend) {
-      g.font = `${size}px "DejaVu Sans", sans-serif`;
-      width += g.measureText(text).width + 14;
-    }
-    g.fillStyle = "rgba(11, 18, 32, 0.85)";          // the legend stays readable over the traces
-    g.fillRect(left + 2, top + 2, width + 6, 21);
-    for (const [text, color, size] of legend) {
-      label(g, text, lx, top + 17, color, "left", size);
-      lx += g.measureText(text).width + 14;
-    }
-  });
-  if (lab.frozenAt !== null) label(g, "FROZEN", right - 8, 20, "#ff5c5c", "right", 15);
-}
-
-function drawTicks(g, start, end, tx, top, bottom, withLabels) {
-  const span = end - start;
-  if (span <= 2.5) {                                // the servo's 60 Hz ticks
-    g.strokeStyle = "#1f2a3a"; g.lineWidth = 1;
-    for (let n = Math.ceil(start * 60); n <= end * 60; n++) {
-      g.beginPath(); g.moveTo(tx(n / 60), top); g.lineTo(tx(n / 60), bottom); g.stroke();
-    }
-  }
-  const step = span <= 1 ? 0.1 : span <= 3 ? 0.5 : span <= 12 ? 2 : 5;
-  g.strokeStyle = "#3b4656";
-  for (let s = Math.ceil(start / step) * step; s <= end; s += step) {
-    g.beginPath(); g.moveTo(tx(s), top); g.lineTo(tx(s), bottom); g.stroke();
-    if (withLabels) label(g, `${s.toFixed(step < 1 ? 1 : 0)} s`, tx(s), bottom + 16, "#8b949e", "center", 12);
-  }
-}
-
-function pick(selector, key, apply) {
-  document.querySelectorAll(selector).forEach((b) => b.addEventListener("click", () => {
-    apply(b.dataset[key]);
-    document.querySelectorAll(selector).forEach((o) => o.classList.toggle("on", o === b));
-  }));
-}
-pick("#axes button", "axis", (v) => { lab.axis = Number(v); });
-pick("#windows button", "window", (v) => { lab.window = Number(v); });
-document.querySelector('#axes button[data-axis="0"]').classList.add("on");
-document.querySelector('#windows button[data-window="2"]').classList.add("on");
-document.getElementById("scope").addEventListener("wheel", (e) => {
-  e.preventDefault();
-  lab.window = Math.min(KEEP_S - 5, Math.max(0.1, lab.window * (e.deltaY > 0 ? 1.25 : 0.8)));
-  lab.dirty = true;
-  document.querySelectorAll("#windows button").forEach((o) => o.classList.remove("on"));
-});
-document.getElementById("freeze").addEventListener("click", (e) => {
-  lab.frozenAt = lab.frozenAt === null ? lab.status.time : null;
-  e.target.classList.toggle("on", lab.frozenAt !== null);
-});
-
-function download(name, url) {
-  const a = document.createElement("a");
-  a.href = url; a.download = name; document.body.appendChild(a); a.click(); a.remove();
-}
-lab.csv = () => {                                    // the window, every axis, as the plant trace
-  const end = lab.frozenAt !== null ? lab.frozenAt : lab.status.time, start = end - lab.window;
-  const rows = [].concat(...lab.traces).filter((r) => r[ROW.time_s] >= start && r[ROW.time_s] <= end)
-    .sort((a, b) => a[ROW.time_s] - b[ROW.time_s] || a[ROW.axis] - b[ROW.axis]);
-  const columns = Object.keys(ROW);
-  return columns.join(",") + "\n" + rows.map((r) =>
-    columns.map((name) => (CSV_FORMAT[name] || String)(r[ROW[name]])).join(",")).join("\n") + "\n";
-};
-const CSV_FORMAT = {                                 // as plant_dev.c writes the row
-  time_s: (v) => v.toFixed(9), axis: (v) => AXES[v], grip: (v) => v.toFixed(2),
-  vcmd: (v) => v.toFixed(3), vel: (v) => v.toFixed(3), pos: (v) => v.toFixed(3),
-};
-document.getElementById("csv").addEventListener("click", () =>
-  download(`scope-${lab.status.time.toFixed(3)}s.csv`, URL.createObjectURL(new Blob([lab.csv()], { type: "text/csv" }))));
-document.getElementById("png").addEventListener("click", () =>
-  download(`scope-${AXES[lab.axis]}-${lab.status.time.toFixed(3)}s.png`, document.getElementById("scope").toDataURL("image/png")));
+// ---- the scope: lab-scope.js --------------------------------------------------------
 
 // ---- the servo's words ----------------------------------------------------------------------
 const STATES = { 0: "Stop", 1: "Move" };
