@@ -4,6 +4,7 @@
 #   make lab-assets       the page's libraries: xterm.js, pinned by harness/lab's
 #                         package-lock.json, installed by npm ci into build/lab
 #   make lab-browser      Debian's chromium and chromium-driver, for the browser tests
+#   make test-browser     every browser session whole (make test runs a short one)
 #   make test-lab-long    the longer browser session (not part of make test)
 #   make bench-lab        the lab's cost: CPU at real pace, instruction rate at full speed
 LAB_DIR   := $(BUILD)/lab
@@ -29,10 +30,14 @@ lab-browser:  ## install Debian's chromium and chromium-driver for the lab's tes
 	@bash mk/apt-need.sh chromium chromium-driver || echo "==> chromium could not be installed: the browser tests will skip"
 test: lab-browser
 
+test-browser: $(LAB_NEEDS) $(PRISTINE_DSK) lab-browser  ## every lab browser session whole (make test keeps a short one)
+	@LAB_BROWSER_FULL=1 $(PY) -m pytest -q -rs -n $(TEST_WORKERS) --dist loadscope tests/lab/test_browser.py \
+	  tests/lab/test_browser_program.py tests/lab/test_browser_two_labs.py
+
 test-lab-long: $(LAB_NEEDS) $(PRISTINE_DSK) lab-browser  ## the long lab browser session (not in make test)
 	@LAB_LONG=1 $(PY) -m pytest -q tests/lab/test_long_session.py
 
 bench-lab: $(LAB_NEEDS) $(PRISTINE_DSK) lab-browser  ## the lab's cost: CPU at real pace, instruction rate at full speed
 	@$(PY) -m harness.bench.lab_bench
 BENCHES += bench-lab
-.PHONY: lab lab-assets lab-browser test-lab-long bench-lab
+.PHONY: lab lab-assets lab-browser test-browser test-lab-long bench-lab

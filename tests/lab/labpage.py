@@ -1,11 +1,20 @@
 """Helpers of the lab's browser tests: waiting, and driving the page as a user."""
+import os
 import time
+
+import pytest
 
 from selenium.webdriver.common.by import By
 
 from harness.machine.build import ROOT
 
 ARTIFACTS = ROOT / "build" / "test-artifacts"
+
+# The browser sessions are long checks: make test keeps a short one (the terminal, a
+# move on the robot and the scope, both projector sizes, the sim> badge, BYE);
+# make test-browser runs every session whole.
+full_session = pytest.mark.skipif(not os.environ.get("LAB_BROWSER_FULL"),
+                                  reason="the whole browser session runs with make test-browser")
 
 
 def wait_for(what, condition, timeout=30, poll=0.05):

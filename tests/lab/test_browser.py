@@ -9,7 +9,7 @@ from harness.analysis.trace import parse_rows
 from harness.machine.build import BUILD
 from harness.machine.plant_rows import COLUMNS
 
-from labpage import ARTIFACTS, click, js, type_line, wait_for
+from labpage import ARTIFACTS, click, full_session, js, type_line, wait_for
 
 # The lab boots with the amplifier rack off, as make run does: nothing drifts until
 # the page's switch is turned on after Set.Up.Robot. x10 keeps the run short.
@@ -95,6 +95,7 @@ def scope_after_the_move(page):
     })()""")
 
 
+@full_session
 def test_the_scope_cursors_csv_and_overlay(page, tmp_path):
     """Frozen since the move: two cursors read the move's Δt and Δcounts; the CSV is the
     window's samples; a saved run's trace file is overlaid, dashed."""
@@ -149,6 +150,7 @@ def test_the_scope_cursors_csv_and_overlay(page, tmp_path):
     assert js(page, "window.lab.scope.frozen") is None
 
 
+@full_session
 def test_pause_holds_simulated_time_and_step_is_one_tick(page):
     assert js(page, "window.lab.status.state") == "pause"     # since the move
     held = js(page, "window.lab.status")
@@ -191,6 +193,9 @@ def test_the_page_fits_both_projectors_without_scrolling(page, width, height):
     """Each panel present, nothing scrolls, at both projector sizes; the screenshots
     (build/test-artifacts/lab-WIDTH.png) are looked at by eye."""
     if width == 1280:                                # a longer move, for the trail to show
+        if js(page, "window.lab.status.state") == "pause":     # the move test paused it
+            click(page, "#pause")                              # Run
+            wait_for("the run", lambda: js(page, "window.lab.status.state") == "run")
         type_line(page, "3200 -2400 400 0 Abs.Move")
         wait_for("the move", lambda: js(page, "window.lab.latest[0][6]") > 3000)
     page.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",
@@ -233,6 +238,7 @@ def test_the_badge_says_when_simh_has_the_machine_stopped(page):
     wait_for("the badge", lambda: page.find_element(By.ID, "state").text.startswith("RUN"))
 
 
+@full_session
 def test_a_breakpoint_on_a_word_stops_the_machine_and_shows_the_history(page):
     field = page.find_element(By.ID, "break-word")
     field.send_keys(".")                             # the word that prints a number
@@ -253,6 +259,7 @@ def test_a_breakpoint_on_a_word_stops_the_machine_and_shows_the_history(page):
     page.find_element(By.CSS_SELECTOR, "#terminal textarea").click()
 
 
+@full_session
 def test_the_asn_shows_its_trial_steps_payoff_and_weights(page):
     """Blocks 1070-1078 (docs/learning.md) after the move test's Set.Up.Robot."""
     assert js(page, "document.getElementById('asn').hidden")

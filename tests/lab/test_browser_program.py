@@ -14,8 +14,10 @@ from selenium.webdriver.support.ui import Select
 from harness.analysis.listing import BLOCK_BYTES
 from harness.lab.page_client import Page
 
-from labpage import ARTIFACTS, click, js, type_line, wait_for
+from labpage import ARTIFACTS, click, full_session, js, type_line, wait_for
 from test_browser import AXE
+
+pytestmark = full_session
 
 LAB_SPEED = "real"                  # loading 1000-1012 takes seconds: time to pause in it
 EDITED = 200                        # a blank block of the pristine disk

@@ -4,7 +4,9 @@ tab keeps working after a reload."""
 import pytest
 
 from harness.lab.launch import LabProcess
-from labpage import js, type_line, wait_for
+from labpage import full_session, js, type_line, wait_for
+
+pytestmark = full_session
 
 
 @pytest.fixture(scope="module")
