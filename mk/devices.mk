@@ -41,6 +41,7 @@ $(ROBOT_SYS): $(SIMH_STAMP)
 
 $(PATCHED_CPU): $(SIMH_STAMP) $(CPU_PATCH)
 	@mkdir -p $(dir $@)
+	@bash mk/apt-need.sh patch
 	@cp $(SIMH_SRC)/PDP11/pdp11_cpu.c $@.tmp
 	@patch -s --no-backup-if-mismatch $@.tmp $(CPU_PATCH) && mv $@.tmp $@
 
