@@ -1,14 +1,16 @@
 """Helpers of the lab's browser tests: waiting, and driving the page as a user."""
 import os
 import time
+from contextlib import contextmanager
 
 import pytest
 
 from selenium.webdriver.common.by import By
 
-from harness.machine.build import ROOT
+from harness.machine.build import BUILD, ROOT
 
 ARTIFACTS = ROOT / "build" / "test-artifacts"
+AXE = BUILD / "lab" / "node_modules" / "axe-core" / "axe.min.js"   # pinned: harness/lab/package.json
 
 # The browser sessions are long checks: make test keeps a short one (the terminal, a
 # move on the robot and the scope, both projector sizes, the sim> badge, BYE);
@@ -44,3 +46,49 @@ def type_line(page, line, answer=" ok", timeout=60):
 
 def click(page, selector):
     page.find_element(By.CSS_SELECTOR, selector).click()
+
+
+def connected(page):
+    """Wait until the page has its websocket and the server's hello (the axes)."""
+    wait_for("the page to connect", lambda: page.execute_script(
+        "return window.lab && window.lab.connected && window.lab.perAxis.length > 0"))
+
+
+def serious_violations(page):
+    """axe-core's serious and critical violations on the page as it is, with the
+    elements they name."""
+    page.execute_script(AXE.read_text())
+    page.set_script_timeout(60)
+    return page.execute_async_script(
+        "const done = arguments[arguments.length - 1];"
+        "axe.run(document, { resultTypes: ['violations'] }).then((r) => done(r.violations"
+        ".filter((v) => ['serious', 'critical'].includes(v.impact))"
+        ".map((v) => [v.id, v.nodes.map((n) => n.target.join(' ')).slice(0, 8)])));")
+
+
+@contextmanager
+def projector(page, width, height):
+    """The page in a window of a projector's size (Chromium's device metrics)."""
+    page.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",
+                         {"width": width, "height": height, "deviceScaleFactor": 1, "mobile": False})
+    try:
+        wait_for("the layout", lambda: js(page, "window.innerWidth") == width)
+        yield
+    finally:
+        page.execute_cdp_cmd("Emulation.clearDeviceMetricsOverride", {})
+
+
+def assert_on_screen(page, width, height, panels, buttons="header button"):
+    """After a relayout: nothing scrolls, each panel is sizeable and inside the window,
+    and no button of `buttons` (a CSS selector) is cut off at the right."""
+    page.execute_script("window.dispatchEvent(new Event('resize'))")
+    page.execute_script("return new Promise(r => setTimeout(r, 300))")
+    scroll = js(page, "[document.documentElement.scrollWidth, document.documentElement.scrollHeight]")
+    assert scroll[0] <= width and scroll[1] <= height, scroll
+    for panel in panels:
+        box = js(page, f"document.getElementById('{panel}').getBoundingClientRect().toJSON()")
+        assert box["width"] > 200 and box["height"] > 150, (panel, box)
+        assert box["right"] <= width and box["bottom"] <= height, (panel, box)
+    rights = js(page, f"[...document.querySelectorAll('{buttons}')]"
+                      ".map(b => b.getBoundingClientRect().right)")
+    assert max(rights) <= width, "a button is cut off"

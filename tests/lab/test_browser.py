@@ -6,10 +6,10 @@ import pytest
 from selenium.webdriver.common.by import By
 
 from harness.analysis.trace import parse_rows
-from harness.machine.build import BUILD
 from harness.machine.plant_rows import COLUMNS
 
-from labpage import ARTIFACTS, click, full_session, js, type_line, wait_for
+from labpage import ARTIFACTS, assert_on_screen, click, connected, full_session, js, projector, \
+    serious_violations, type_line, wait_for
 
 # The lab boots with the amplifier rack off, as make run does: nothing drifts until
 # the page's switch is turned on after Set.Up.Robot. x10 keeps the run short.
@@ -19,16 +19,15 @@ LAB_SPEED = "x10"
 @pytest.fixture(scope="module")
 def page(lab_server, browser):
     browser.get(lab_server.url)
-    wait_for("the page to connect", lambda: browser.execute_script(
-        "return window.lab && window.lab.connected && window.lab.perAxis.length > 0"))
+    connected(browser)
     return browser
 
 
 def test_the_terminal_answers(page):
     assert "2 3 + . 5  ok" in type_line(page, "2 3 + .")
     assert "token=" not in page.current_url          # off the address bar
-    violations = accessibility_violations(page)      # before 1000 LOAD: no servo data yet
-    assert not [v for v in violations if v[1] in ("serious", "critical")], violations
+    violations = serious_violations(page)            # before 1000 LOAD: no servo data yet
+    assert not violations, violations
 
 
 def test_a_move_shows_on_the_robot_and_the_scope(page):
@@ -175,17 +174,6 @@ def test_pause_holds_simulated_time_and_step_is_one_tick(page):
     assert "1 1 + . 2  ok" in type_line(page, "")
 
 
-AXE = BUILD / "lab" / "node_modules" / "axe-core" / "axe.min.js"   # pinned: harness/lab/package.json
-
-
-def accessibility_violations(page):
-    """axe-core's violations on the page as it is: (rule, impact, nodes, help)."""
-    page.execute_script(AXE.read_text())
-    page.set_script_timeout(60)
-    return page.execute_async_script(
-        "const done = arguments[arguments.length - 1];"
-        "axe.run(document, { resultTypes: ['violations'] }).then((r) => done("
-        "r.violations.map((v) => [v.id, v.impact, v.nodes.length, v.help])));")
 
 
 @pytest.mark.parametrize("width, height", [(1280, 720), (1920, 1080)])
@@ -198,34 +186,20 @@ def test_the_page_fits_both_projectors_without_scrolling(page, width, height):
             wait_for("the run", lambda: js(page, "window.lab.status.state") == "run")
         type_line(page, "3200 -2400 400 0 Abs.Move")
         wait_for("the move", lambda: js(page, "window.lab.latest[0][6]") > 3000)
-    page.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",
-                         {"width": width, "height": height, "deviceScaleFactor": 1, "mobile": False})
-    try:
-        wait_for("the layout", lambda: js(page, "window.innerWidth") == width)
-        page.execute_script("window.dispatchEvent(new Event('resize'))")
-        page.execute_script("return new Promise(r => setTimeout(r, 300))")
-        scroll = js(page, "[document.documentElement.scrollWidth, document.documentElement.scrollHeight]")
-        assert scroll[0] <= width and scroll[1] <= height, scroll
+    with projector(page, width, height):
+        assert_on_screen(page, width, height,
+                         ("console-panel", "robot-panel", "servo-panel", "scope-panel"))
         front = page.find_element(By.ID, "front-panel").text    # the 11/23, live
         assert "PSW" in front and "IP" in front and "DAC X" in front
         assert js(page, "window.lab.panel.registers.length") == 8
         box = js(page, "document.getElementById('front-panel').getBoundingClientRect().toJSON()")
         assert box["bottom"] <= height, "the front panel is cut off"
-        for panel in ("console-panel", "robot-panel", "servo-panel", "scope-panel"):
-            box = js(page, f"document.getElementById('{panel}').getBoundingClientRect().toJSON()")
-            assert box["width"] > 200 and box["height"] > 150, (panel, box)
-            assert box["right"] <= width and box["bottom"] <= height, (panel, box)
-        header = js(page, "[...document.querySelectorAll('header button')]"
-                          ".map(b => b.getBoundingClientRect().right)")
-        assert max(header) <= width, "a header button is cut off"
         low, high = js(page, "[window.lab.scope.plot.scales.counts.min, window.lab.scope.plot.scales.counts.max]")
         shown = [v for v in js(page, "window.lab.scope.plot.data[1]") if v is not None]
         assert low <= min(shown) and max(shown) <= high     # the scope's counts all in sight
         page.save_screenshot(str(ARTIFACTS / f"lab-{width}.png"))
-        violations = accessibility_violations(page)
-        assert not [v for v in violations if v[1] in ("serious", "critical")], violations
-    finally:
-        page.execute_cdp_cmd("Emulation.clearDeviceMetricsOverride", {})
+        violations = serious_violations(page)
+        assert not violations, violations
 
 
 def test_the_badge_says_when_simh_has_the_machine_stopped(page):

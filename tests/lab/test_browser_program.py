@@ -14,8 +14,8 @@ from selenium.webdriver.support.ui import Select
 from harness.analysis.listing import BLOCK_BYTES
 from harness.lab.page_client import Page
 
-from labpage import ARTIFACTS, click, full_session, js, type_line, wait_for
-from test_browser import AXE
+from labpage import ARTIFACTS, assert_on_screen, click, connected, full_session, js, projector, \
+    serious_violations, type_line, wait_for
 
 pytestmark = full_session
 
@@ -29,20 +29,8 @@ def page(lab_server, browser):
     browser.get(lab_server.url)
     browser.execute_script("localStorage.clear()")
     browser.refresh()
-    wait_for("the page to connect", lambda: browser.execute_script(
-        "return window.lab && window.lab.connected && window.lab.perAxis.length > 0"))
+    connected(browser)
     return browser
-
-
-def serious_violations(page):
-    """axe-core's serious and critical violations with the elements they name."""
-    page.execute_script(AXE.read_text())
-    page.set_script_timeout(60)
-    return page.execute_async_script(
-        "const done = arguments[arguments.length - 1];"
-        "axe.run(document, { resultTypes: ['violations'] }).then((r) => done(r.violations"
-        ".filter((v) => ['serious', 'critical'].includes(v.impact))"
-        ".map((v) => [v.id, v.nodes.map((n) => n.target.join(' ')).slice(0, 8)])));")
 
 
 class AnotherPage:
@@ -179,25 +167,10 @@ def test_the_teaching_views_fit_both_projectors_in_both_themes(page, theme, widt
         if not js(page, "document.getElementById('font-up').disabled"):
             click(page, "#font-up")
     assert js(page, "window.lab.fontStep") == len(js(page, "window.lab.fontScales")) - 1
-    page.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",
-                         {"width": width, "height": height, "deviceScaleFactor": 1, "mobile": False})
-    try:
-        wait_for("the layout", lambda: js(page, "window.innerWidth") == width)
+    with projector(page, width, height):
         for view in ("teach-panel", "program-panel"):
             click(page, f'#views button[data-view="{view}"]')
-            page.execute_script("window.dispatchEvent(new Event('resize'))")
-            page.execute_script("return new Promise(r => setTimeout(r, 300))")
-            scroll = js(page, "[document.documentElement.scrollWidth, "
-                              "document.documentElement.scrollHeight]")
-            assert scroll[0] <= width and scroll[1] <= height, (view, scroll)
-            box = js(page, f"document.getElementById('{view}').getBoundingClientRect().toJSON()")
-            assert box["width"] > 200 and box["height"] > 150, (view, box)
-            assert box["right"] <= width and box["bottom"] <= height, (view, box)
-            buttons = js(page, "[...document.querySelectorAll('header button, #views button')]"
-                               ".map(b => b.getBoundingClientRect().right)")
-            assert max(buttons) <= width, "a button is cut off"
+            assert_on_screen(page, width, height, (view,), buttons="header button, #views button")
             page.save_screenshot(str(ARTIFACTS / f"lab-{view.split('-')[0]}-{theme}-{width}.png"))
             violations = serious_violations(page)
             assert not violations, violations
-    finally:
-        page.execute_cdp_cmd("Emulation.clearDeviceMetricsOverride", {})

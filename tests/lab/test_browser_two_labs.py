@@ -4,7 +4,7 @@ tab keeps working after a reload."""
 import pytest
 
 from harness.lab.launch import LabProcess
-from labpage import full_session, js, type_line, wait_for
+from labpage import connected, full_session, js, type_line, wait_for
 
 pytestmark = full_session
 
@@ -14,11 +14,6 @@ def second_lab(tmp_path_factory):
     server = LabProcess(tmp_path_factory.mktemp("lab2"))
     yield server
     assert server.stop() == 0
-
-
-def connected(page):
-    wait_for("the page to connect", lambda: page.execute_script(
-        "return window.lab && window.lab.connected && window.lab.perAxis.length > 0"))
 
 
 def test_two_labs_in_one_browser_each_keep_working_after_a_reload(lab_server, second_lab,
