@@ -20,7 +20,8 @@ DEV_OBJ    := $(BUILD)/obj/devices
 DEV_DIR    := pdp11-devices
 DEV_KINDS  := bus plant lab simh lockstep
 DEV_HDRS   := $(wildcard $(DEV_DIR)/*.h $(DEV_KINDS:%=$(DEV_DIR)/%/*.h))
-DEV_GLUE   := $(wildcard $(DEV_KINDS:%=$(DEV_DIR)/%/*.c))
+# lockstep/coordinator.c is a program of its own (build/lockstep-coordinator), not a device
+DEV_GLUE   := $(filter-out $(DEV_DIR)/lockstep/coordinator.c,$(wildcard $(DEV_KINDS:%=$(DEV_DIR)/%/*.c)))
 DEV_OBJS   := $(patsubst $(DEV_DIR)/%.c,$(DEV_OBJ)/%.o,$(DEV_GLUE))
 DEV_INCS   := -I $(DEV_DIR) $(DEV_KINDS:%=-I $(DEV_DIR)/%)
 ROBOT_SYS  := $(DEV_OBJ)/pdp11_sys_stock.o
@@ -81,10 +82,10 @@ $(BUILD)/plant_test: tests/devices/plant_test.c $(DEV_OBJ)/plant/plant.o
 $(BUILD)/gripper_test: tests/devices/gripper_test.c $(DEV_OBJ)/plant/gripper.o
 	@$(CC) $(PLANT_CFLAGS) -I $(DEV_DIR)/plant -o $@ $^ -lm
 
-# The lock-step coordinator (pdp11-devices/coordinator/: the one plant of the five
+# The lock-step coordinator (pdp11-devices/lockstep/coordinator.c: the one plant of the five
 # machines, docs/controllers.md) and its pure logic's test.
 LOCKSTEP_PURE := $(filter $(DEV_OBJ)/plant/% $(DEV_OBJ)/lockstep/%,$(PURE_OBJS))
-$(BUILD)/lockstep-coordinator: $(DEV_DIR)/coordinator/coordinator.c $(LOCKSTEP_PURE) $(DEV_HDRS)
+$(BUILD)/lockstep-coordinator: $(DEV_DIR)/lockstep/coordinator.c $(LOCKSTEP_PURE) $(DEV_HDRS)
 	@$(CC) $(PLANT_CFLAGS) $(DEV_INCS) -o $@ $< $(LOCKSTEP_PURE) -lm
 
 $(BUILD)/lockstep_test: tests/controllers/lockstep_test.c $(LOCKSTEP_PURE) $(DEV_HDRS)

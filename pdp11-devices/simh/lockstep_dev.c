@@ -139,8 +139,11 @@ static t_stat ls_attach (UNIT *uptr, char *cptr)
     quantum_acc = 0;
     memset (&up, 0, sizeof up);
     lost_told = 0;
-    uptr->filename = (char *) calloc (strlen (cptr) + 1, 1);
-    strcpy (uptr->filename, cptr);
+    /* SHOW says "attached to" this: the socket's name, not its (temporary) directory,
+       so that a scripted run's transcript is the same every run */
+    const char *name = strrchr (cptr, '/') ? strrchr (cptr, '/') + 1 : cptr;
+    uptr->filename = (char *) calloc (strlen (name) + 1, 1);
+    strcpy (uptr->filename, name);
     uptr->flags |= UNIT_ATT;
     sim_activate (uptr, clock_share (quanta_per_s, &quantum_acc));
     return SCPE_OK;
