@@ -34,6 +34,7 @@ WORKING_DISK = ROOT / "local" / DISK_NAME  # the console's and the lab's, kept b
 RATE = 300_000
 # The lock-step coordinator of the five machines (issue 21, pdp11-devices/lockstep/coordinator.c)
 COORDINATOR = BUILD / "lockstep-coordinator"
+CONTROLLERS_DIR = ROOT / "local" / "controllers"   # make run CONTROLLERS=4's session (0700)
 
 
 def fresh_disk(directory, name=DISK_NAME, source=PRISTINE_DISK):

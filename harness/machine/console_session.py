@@ -54,13 +54,15 @@ RACK_HINT = ("The amplifier rack starts OFF: the axes stand still. After Set.Up.
 SIMH_ERROR = re.compile(r"(Unit not attached|Non-existent[^\r\n]*|[A-Z][^\r\n]*error[^\r\n]*)")
 
 
-def boot_script(disk, trace=None, fast=False, kernel=KERNEL, timed=False, read_only=False):
+def boot_script(disk, trace=None, fast=False, kernel=KERNEL, timed=False, read_only=False,
+                setup=""):
     """The console's machine: paced (or idling) as asked, the rack off, a trace;
-    timed: each instruction takes its KDF11-A time (SET CLK TIMED)."""
+    timed: each instruction takes its KDF11-A time (SET CLK TIMED); `setup`: more
+    SIMH lines (the five machines' lock-step: harness/controllers/launcher.py)."""
     trace_line = f"attach plant {Path(trace).resolve()}\n" if trace else ""
     return simh.boot_script(disk, kernel, setup=f"{IDLE if fast else REALTIME}\n"
                             + ("set clk timed\n" if timed else "")
-                            + f"{RACK_OFF}\n{trace_line}", read_only=read_only)
+                            + f"{RACK_OFF}\n{trace_line}" + setup, read_only=read_only)
 
 
 def simh_exit_report(status, disk):
@@ -304,11 +306,12 @@ def _show(fd, data):
 
 
 def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BUSY_WAIT,
-            timed=False, read_only=False):
-    """Run the console until the user leaves; the exit status (0: all written)."""
+            timed=False, read_only=False, setup=""):
+    """Run the console until the user leaves; the exit status (0: all written).
+    `setup`: more SIMH lines for the boot script (boot_script)."""
     with tempfile.TemporaryDirectory(prefix="console-") as tmp:
         ini = Path(tmp) / "console.ini"
-        ini.write_text(boot_script(disk, trace, fast, kernel, timed, read_only))
+        ini.write_text(boot_script(disk, trace, fast, kernel, timed, read_only, setup))
         pace = "full speed" if fast else ("real-time pace (KDF11-A instruction times)" if timed
                                           else "real-time pace (300K instructions/s)")
         mode = " (read-only: FLUSH will fail)" if read_only else ""
