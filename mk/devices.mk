@@ -99,3 +99,8 @@ bench-devices: $(BUILD)/pdp11 $(BUILD)/pdp11-plain $(BUILD)/pdp11-guided $(BUILD
 	@$(PY) -m harness.bench.bench_devices
 BENCHES += bench-devices
 .PHONY: bench-devices
+
+bench-controllers: $(BUILD)/pdp11 $(BUILD)/lockstep-coordinator venv  ## the five machines of issue 21: aggregate rate at full speed, the lock-step's overhead
+	@$(PY) -m harness.bench.controllers_bench
+BENCHES += bench-controllers
+.PHONY: bench-controllers

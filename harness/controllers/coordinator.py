@@ -40,9 +40,11 @@ def member_settings(member, socket):
 
 class Coordinator:
     def __init__(self, directory=None, trace=None, members=MEMBERS, sample=60, seed=1983,
-                 join_timeout=120):
+                 join_timeout=120, quanta=1000):
         """`trace`: the plant trace's path (None: none); `members`: who takes part;
-        `directory`: where the trace's relative path is (cwd of the process)."""
+        `directory`: where the trace's relative path is (cwd of the process);
+        `quanta`: quanta per simulated second (1000: 1 ms, the plant's step; more
+        only to measure what shorter ones cost)."""
         if not COORDINATOR.exists():
             raise CoordinatorError(f"{COORDINATOR} does not exist: run make")
         self._private = tempfile.TemporaryDirectory(prefix="lockstep-")
@@ -50,7 +52,7 @@ class Coordinator:
         self.socket = Path(self._private.name) / "sock"
         args = [str(COORDINATOR), str(self.socket), "--members", ",".join(members),
                 "--sample", str(sample), "--seed", str(seed),
-                "--join-timeout", str(join_timeout)]
+                "--join-timeout", str(join_timeout), "--quanta", str(quanta)]
         if trace:
             args += ["--trace", str(trace)]
         self.proc = subprocess.Popen(args, cwd=directory, stderr=subprocess.PIPE, text=True)

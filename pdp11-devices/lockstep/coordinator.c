@@ -2,11 +2,13 @@
    when the 11/23 and four LSI-11/03s run in lock-step (docs/controllers.md).
 
    lockstep-coordinator SOCKET [--trace FILE] [--sample N] [--seed N]
-                        [--members LIST] [--join-timeout S]
+                        [--members LIST] [--join-timeout S] [--quanta N]
    listens on the Unix socket SOCKET (made here, removed at exit; put it in a
    private directory: the launcher's is mode 0700), waits for the members
    (LIST, default x,y,z,t,main: a subset for tests) to ATTACH LOCKSTEP, then
-   runs the barrier: quantum k ends when every live member has sent its ls_up
+   runs the barrier (N quanta per simulated second, default 1000: a quantum
+   is never longer than the plant's 1 ms grid step; more, shorter ones are
+   allowed, for measuring their cost): quantum k ends when every live member has sent its ls_up
    for k; the plant and the links are stepped (lockstep/quantum.c) and each
    member gets its ls_down. Only the wire is here: sockets, joining, losing.
 
@@ -163,24 +165,27 @@ static void expect_members (const char *list)
 int main (int argc, char **argv)
 {
     const char *trace_path = NULL, *list = "x,y,z,t,main";
-    int sample = 60, join_timeout_s = 60;
+    int sample = 60, join_timeout_s = 60, quanta = LS_QUANTA_PER_S;
     unsigned long long seed = 1983;
     static ls_down downs[LS_MEMBERS];
     ls_world w;
     FILE *trace = NULL;
     if (argc < 2 || argv[1][0] == '-')
         die (2, "usage: lockstep-coordinator SOCKET [--trace FILE] [--sample N] [--seed N] "
-             "[--members x,y,z,t,main] [--join-timeout S]");
+             "[--members x,y,z,t,main] [--join-timeout S] [--quanta N]");
     for (int i = 2; i + 1 < argc; i += 2) {
         if (!strcmp (argv[i], "--trace")) trace_path = argv[i + 1];
         else if (!strcmp (argv[i], "--sample")) sample = atoi (argv[i + 1]);
         else if (!strcmp (argv[i], "--seed")) seed = strtoull (argv[i + 1], NULL, 10);
         else if (!strcmp (argv[i], "--members")) list = argv[i + 1];
         else if (!strcmp (argv[i], "--join-timeout")) join_timeout_s = atoi (argv[i + 1]);
+        else if (!strcmp (argv[i], "--quanta")) quanta = atoi (argv[i + 1]);
         else die (2, "unknown option (see the file's header)");
     }
     if (argc % 2 != 0) die (2, "an option lacks its value");
     if (sample < 0 || sample > 1000) die (2, "--sample takes 0..1000");
+    if (quanta < LS_QUANTA_PER_S || quanta > 100000)
+        die (2, "--quanta takes 1000..100000 (a quantum no longer than the plant's 1 ms step)");
     signal (SIGPIPE, SIG_IGN);
     signal (SIGTERM, on_signal);
     signal (SIGINT, on_signal);
@@ -190,6 +195,7 @@ int main (int argc, char **argv)
     if (trace_path && !(trace = fopen (trace_path, "w")))
         die (2, "cannot write the trace");
     ls_world_init (&w, seed, sample, trace);
+    w.quanta_per_s = quanta;
     for (int m = 0; m < LS_MEMBERS; m++)
         if (!members[m].expected) w.expected &= ~(1u << m);
     w.live = w.expected;
