@@ -13,12 +13,12 @@ from harness.commands.argtypes import positive
 from harness.commands.console import ConsoleError, working_disk
 from harness.controllers import bridge
 from harness.controllers.coordinator import CONTROLLERS, MEMBERS, CoordinatorError
-from harness.controllers.launcher import launch
-from harness.controllers.scripted import run_five
+from harness.controllers.launcher import STATUS, launch
+from harness.lab.controllers_page import serve
+from harness.controllers.scripted import run_five_file, split_joined
 from harness.blocks.disk import write_atomic
-from harness.machine import script
 from harness.machine.build import CONTROLLERS_DIR, KERNEL_1103, PRISTINE_DISK
-from harness.machine.script_run import ERRORS as RUN_ERRORS, check_start_image, check_writable
+from harness.machine.script_run import ERRORS as RUN_ERRORS
 
 ERRORS = RUN_ERRORS + (ConsoleError, CoordinatorError)
 
@@ -54,6 +54,8 @@ def configure(parser):
     p.add_argument("--trace", metavar="FILE", help="record the plant trace (CSV)")
     p.add_argument("--no-boot-lines", action="store_true",
                    help="leave the 11/03s at their prompts")
+    p.add_argument("--lab", action="store_true",
+                   help="serve the lab's page of the five machines (127.0.0.1, its URL printed)")
     p.add_argument("--busy-wait", type=positive, help=argparse.SUPPRESS)
     # the session's directory (tests: not the user's local/controllers)
     p.add_argument("--session-dir", type=Path, default=CONTROLLERS_DIR, help=argparse.SUPPRESS)
@@ -87,7 +89,8 @@ def run_launch(args):
         raise ConsoleError(f"{KERNEL_1103}: no 11/03 kernel (run make)")
     return launch(disk, fast=args.fast, trace=args.trace and Path(args.trace).resolve(),
                   busy_wait=args.busy_wait, boot_lines=False if args.no_boot_lines else None,
-                  directory=args.session_dir)
+                  directory=args.session_dir,
+                  page=(lambda d: serve(d / STATUS, d)) if args.lab else None)
 
 
 def run_console(args):
@@ -110,22 +113,17 @@ def run_console(args):
 
 def run_script(args):
     source = Path(args.script)
-    steps = script.read(source)
     out = Path(args.out) if args.out else source.parent
-    stem = source.stem
-    paths = {m: out / f"{stem}.{m}.transcript" for m in MEMBERS}
-    trace_path = out / f"{stem}.trace.csv"
-    for path in (*paths.values(), trace_path):
-        check_writable(path)
-    check_start_image(Path(args.disk))
+    paths = {m: out / f"{source.stem}.{m}.transcript" for m in MEMBERS}
+    trace_path = out / f"{source.stem}.trace.csv"
     with tempfile.TemporaryDirectory(prefix="controllers-run-") as tmp:
-        result = run_five(steps, tmp, disk=args.disk, keep_going=args.keep_going,
-                          line_limit=args.line_limit)
-    for m, path in paths.items():
-        write_atomic(path, result.transcripts[m].encode("latin-1"))
-    write_atomic(trace_path, result.trace)
-    for member, failure in result.failures:
-        print(f"{member}: {failure.where(args.script)}", file=sys.stderr)
-    print(f"{args.script}: five machines, {len(result.failures)} failures; transcripts "
-          f"{out}/{stem}.{{{','.join(MEMBERS)}}}.transcript, trace {trace_path}")
+        joined = Path(tmp) / "joined.transcript"
+        steps, result = run_five_file(source, joined, trace_path, disk=args.disk,
+                                      keep_going=args.keep_going, line_limit=args.line_limit)
+    for m, text in split_joined(result.transcript).items():
+        write_atomic(paths[m], text.encode("latin-1"))
+    for failure in result.failures:
+        print(failure.where(args.script), file=sys.stderr)
+    print(f"{args.script}: five machines, {len(result.failures)} failed; transcripts "
+          f"{out}/{source.stem}.{{{','.join(MEMBERS)}}}.transcript, trace {trace_path}")
     return 1 if result.failures else 0

@@ -40,11 +40,12 @@ def member_settings(member, socket):
 
 class Coordinator:
     def __init__(self, directory=None, trace=None, members=MEMBERS, sample=60, seed=1983,
-                 join_timeout=120, quanta=1000):
+                 join_timeout=120, quanta=1000, status=None):
         """`trace`: the plant trace's path (None: none); `members`: who takes part;
         `directory`: where the trace's relative path is (cwd of the process);
         `quanta`: quanta per simulated second (1000: 1 ms, the plant's step; more
-        only to measure what shorter ones cost)."""
+        only to measure what shorter ones cost); `status`: the status file's path
+        (the lab's page of the five machines reads it), None for none."""
         if not COORDINATOR.exists():
             raise CoordinatorError(f"{COORDINATOR} does not exist: run make")
         self._private = tempfile.TemporaryDirectory(prefix="lockstep-")
@@ -55,6 +56,8 @@ class Coordinator:
                 "--join-timeout", str(join_timeout), "--quanta", str(quanta)]
         if trace:
             args += ["--trace", str(trace)]
+        if status:
+            args += ["--status", str(status)]
         self.proc = subprocess.Popen(args, cwd=directory, stderr=subprocess.PIPE, text=True)
         self._wait_for_socket()
 

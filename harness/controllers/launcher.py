@@ -34,6 +34,7 @@ from harness.machine.build import (CONTROLLERS_DIR, KERNEL, KERNEL_1103, PDP11, 
                                     fresh_disk)
 from harness.machine.console_session import session
 
+STATUS = "status.json"       # the coordinator's status, for the lab's page of the five
 END_WAIT = 10                # wall seconds the 11/03s get to stop and QUIT at the end
 PROMPT = b" ok\r\n"
 
@@ -62,7 +63,7 @@ class Launch:
         self.token = secrets.token_hex(16)
         (directory / "token").write_text(self.token)
         (directory / "token").chmod(0o600)
-        self.coordinator = Coordinator(directory, trace=trace)
+        self.coordinator = Coordinator(directory, trace=trace, status=directory / STATUS)
         self.bridge = ConsoleBridge(directory, self.token)
         self.children = {}
         if boot_lines is None:
@@ -121,12 +122,20 @@ class Launch:
 
 
 def launch(disk, fast=False, trace=None, busy_wait=None, boot_lines=None,
-           directory=CONTROLLERS_DIR):
-    """The whole `make run CONTROLLERS=4`: exit status 0 when the 11/23 left cleanly."""
+           directory=CONTROLLERS_DIR, page=None):
+    """The whole `make run CONTROLLERS=4`: exit status 0 when the 11/23 left cleanly.
+    page(directory) -> (url, stop): serves a page of the session (the lab's page of
+    the five machines, given by the command: this package may not import the lab)."""
     say("booting five machines in lock-step (issue 21, docs/controllers.md): "
         "the 11/23 and the LSI-11/03s of x, y, z, t")
     five = Launch(directory=Path(directory), trace=trace, boot_lines=boot_lines)
+    stop_page = None
     try:
+        if page:
+            url, stop_page = page(Path(directory))
+            say(f"the five machines' page: {url} (open it in a browser on this machine)")
         return five.front(disk, fast=fast, busy_wait=busy_wait)
     finally:
+        if stop_page:
+            stop_page()
         five.close()

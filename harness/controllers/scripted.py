@@ -11,16 +11,20 @@ the 11/23's script is done it QUITs; the coordinator ends the session, the
 console of each, as script_run.Transcript writes them) and the one plant trace.
 The same script gives the same bytes, every run.
 """
+import re
+import tempfile
 import threading
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from harness.blocks.disk import image_block, read_image
+from harness.blocks.disk import image_block, read_image, write_atomic
 from harness.controllers.boot_lines import axis_boot_lines
 from harness.controllers.coordinator import CONTROLLERS, MAIN, MEMBERS, Coordinator
 from harness.controllers.members import MemberMachine, session_over
 from harness.machine.build import KERNEL, PRISTINE_DISK, fresh_disk
-from harness.machine.script_run import Failure, Transcript, run_steps
+from harness.machine import script
+from harness.machine.script_run import (Failure, Result, Transcript, check_start_image,
+                                        check_writable, run_steps)
 
 FIRST_AXIS_BLOCK = 1080
 
@@ -139,3 +143,33 @@ def run_five(steps, directory, disk=PRISTINE_DISK, keep_going=False, line_limit=
     trace = setup.directory / "trace.csv"
     result.trace = trace.read_bytes() if trace.exists() else b""
     return result
+
+
+def joined(transcripts):
+    """The five transcripts as one text, each under a "===== member" line (the
+    regression scenarios' golden: harness/analysis/regression.py)."""
+    return "".join(f"===== {m}\n{transcripts[m]}" for m in MEMBERS)
+
+
+def split_joined(text):
+    """joined()'s inverse: member -> transcript."""
+    parts = re.split(r"^===== (\w+)\n", text, flags=re.M)[1:]
+    return dict(zip(parts[::2], parts[1::2]))
+
+
+def run_five_file(script_path, transcript_path, trace_path, disk=PRISTINE_DISK,
+                  keep_going=False, line_limit=60.0):
+    """script_run.run_file's counterpart for the five machines: the 11/23 runs the
+    script at script_path; the joined transcripts and the trace are written whole.
+    (steps, a Result whose failures name their machine)."""
+    steps = script.read(script_path)
+    for path in (transcript_path, trace_path):
+        check_writable(path)
+    check_start_image(Path(disk))
+    with tempfile.TemporaryDirectory(prefix="controllers-run-") as tmp:
+        five = run_five(steps, tmp, disk=disk, keep_going=keep_going, line_limit=line_limit)
+    write_atomic(transcript_path, joined(five.transcripts).encode("latin-1"))
+    write_atomic(trace_path, five.trace)
+    failures = [f if m == MAIN else Failure(f.lineno, f.text, f"11/03 {m}: {f.message}")
+                for m, f in five.failures]
+    return steps, Result(joined(five.transcripts), failures, len(steps))

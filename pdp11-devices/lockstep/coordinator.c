@@ -3,6 +3,7 @@
 
    lockstep-coordinator SOCKET [--trace FILE] [--sample N] [--seed N]
                         [--members LIST] [--join-timeout S] [--quanta N]
+                        [--status FILE]
    listens on the Unix socket SOCKET (made here, removed at exit; put it in a
    private directory: the launcher's is mode 0700), waits for the members
    (LIST, default x,y,z,t,main: a subset for tests) to ATTACH LOCKSTEP, then
@@ -11,6 +12,9 @@
    allowed, for measuring their cost): quantum k ends when every live member has sent its ls_up
    for k; the plant and the links are stepped (lockstep/quantum.c) and each
    member gets its ls_down. Only the wire is here: sockets, joining, losing.
+   --status FILE: every 100 quanta (and when a member is lost) FILE is
+   replaced (written beside it, renamed) by the status (quantum.h), which the
+   lab page shows; it changes nothing in the run.
 
    A member whose connection closes (killed, QUIT) is lost at once: the
    others go on without it (its axis keeps its last DAC code, as a dead
@@ -44,6 +48,20 @@ typedef struct {
 static member members[LS_MEMBERS];
 static volatile sig_atomic_t stopping;
 static const char *socket_path;
+static const char *status_path;
+#define STATUS_EVERY 100                /* quanta between status files */
+
+static void write_status (const ls_world *w, uint64_t k)
+{
+    char tmp[4200];
+    FILE *f;
+    if (!status_path) return;
+    snprintf (tmp, sizeof tmp, "%s.tmp", status_path);
+    if (!(f = fopen (tmp, "w"))) return;
+    ls_world_status (f, w, k);
+    fclose (f);
+    rename (tmp, status_path);
+}
 
 static void on_signal (int sig)
 {
@@ -172,7 +190,7 @@ int main (int argc, char **argv)
     FILE *trace = NULL;
     if (argc < 2 || argv[1][0] == '-')
         die (2, "usage: lockstep-coordinator SOCKET [--trace FILE] [--sample N] [--seed N] "
-             "[--members x,y,z,t,main] [--join-timeout S] [--quanta N]");
+             "[--members x,y,z,t,main] [--join-timeout S] [--quanta N] [--status FILE]");
     for (int i = 2; i + 1 < argc; i += 2) {
         if (!strcmp (argv[i], "--trace")) trace_path = argv[i + 1];
         else if (!strcmp (argv[i], "--sample")) sample = atoi (argv[i + 1]);
@@ -180,6 +198,7 @@ int main (int argc, char **argv)
         else if (!strcmp (argv[i], "--members")) list = argv[i + 1];
         else if (!strcmp (argv[i], "--join-timeout")) join_timeout_s = atoi (argv[i + 1]);
         else if (!strcmp (argv[i], "--quanta")) quanta = atoi (argv[i + 1]);
+        else if (!strcmp (argv[i], "--status")) status_path = argv[i + 1];
         else die (2, "unknown option (see the file's header)");
     }
     if (argc % 2 != 0) die (2, "an option lacks its value");
@@ -199,6 +218,7 @@ int main (int argc, char **argv)
     for (int m = 0; m < LS_MEMBERS; m++)
         if (!members[m].expected) w.expected &= ~(1u << m);
     w.live = w.expected;
+    uint32_t status_live = w.live;
     for (uint64_t k = 1;; k++) {
         const ls_up *ups[LS_MEMBERS];
         const ls_event *events[LS_MEMBERS];
@@ -213,6 +233,10 @@ int main (int argc, char **argv)
             members[m].ready = 0;
             if (!ls_io_full (members[m].fd, &downs[m], sizeof downs[m], 1))
                 lose (&w, m, "lost (its connection closed)");
+        }
+        if (k % STATUS_EVERY == 0 || w.live != status_live) {
+            write_status (&w, k);
+            status_live = w.live;
         }
         if (members[LS_MAIN].expected && !(w.live & (1u << LS_MAIN)))
             break;                          /* the others were told: LS_END */

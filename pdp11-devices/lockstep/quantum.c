@@ -82,12 +82,56 @@ static void apply_events (ls_world *w, const ls_up *const ups[], const ls_event 
     free (all);
 }
 
+static void remember (ls_history *h, link_wire wire, uint64_t k)
+{
+    if (!wire.sent) return;
+    h->word[h->n % LS_HISTORY] = wire.value;
+    h->quantum[h->n % LS_HISTORY] = k;
+    h->n++;
+}
+
+static void history_json (FILE *f, const ls_history *h)
+{
+    int first = h->n > LS_HISTORY ? h->n - LS_HISTORY : 0;
+    fputc ('[', f);
+    for (int i = first; i < h->n; i++)
+        fprintf (f, "%s[%llu,%u]", i > first ? "," : "",
+                 (unsigned long long) h->quantum[i % LS_HISTORY], h->word[i % LS_HISTORY]);
+    fputc (']', f);
+}
+
+void ls_world_status (FILE *f, const ls_world *w, uint64_t k)
+{
+    static const char *const names[LS_MEMBERS] = { "x", "y", "z", "t", "main" };
+    fprintf (f, "{\"quantum\":%llu,\"time_s\":%.6f,\"members\":{", (unsigned long long) k,
+             (double) k / w->quanta_per_s);
+    for (int m = 0; m < LS_MEMBERS; m++)
+        fprintf (f, "%s\"%s\":\"%s\"", m ? "," : "", names[m],
+                 !(w->expected & (1u << m)) ? "absent" : (w->live & (1u << m)) ? "running" : "lost");
+    fprintf (f, "},\"axes\":[");
+    for (int a = 0; a < PLANT_AXES; a++) {
+        const plant_axis *x = &w->pl.ax[a];
+        fprintf (f, "%s{\"axis\":\"%c\",\"pos\":%.3f,\"vel\":%.3f,\"dac\":%d,"
+                 "\"counter\":%d,\"run\":%d,\"to_11_03\":", a ? "," : "", plant_axis_names[a],
+                 x->p, x->v, x->code, (int) (int16_t) plant_counter (&w->pl, a), x->run);
+        history_json (f, &w->to_axis[a]);
+        fprintf (f, ",\"to_11_23\":");
+        history_json (f, &w->to_main[a]);
+        fputc ('}', f);
+    }
+    fprintf (f, "]}\n");
+}
+
 void ls_world_step (ls_world *w, uint64_t k, const ls_up *const ups[LS_MEMBERS],
                     const ls_event *const events[LS_MEMBERS], ls_down downs[LS_MEMBERS])
 {
     double t_end = (double) k / w->quanta_per_s;
     link_wire none = { 0 };
     apply_events (w, ups, events);
+    for (int a = 0; a < LS_LINKS; a++) {
+        if (ups[LS_MAIN]) remember (&w->to_axis[a], ups[LS_MAIN]->links[a], k);
+        if (ups[a]) remember (&w->to_main[a], ups[a]->links[0], k);
+    }
     samples_until (w, t_end);
     plant_advance (&w->pl, t_end);
     for (int m = 0; m < LS_MEMBERS; m++) {

@@ -20,6 +20,14 @@
 #include "gripper.h"
 #include "lockstep_wire.h"
 
+#define LS_HISTORY 8                    /* link words kept per axis and direction */
+
+typedef struct {                        /* the last words that crossed one way */
+    uint16_t word[LS_HISTORY];
+    uint64_t quantum[LS_HISTORY];
+    int n;                              /* words ever; the newest at (n - 1) % LS_HISTORY */
+} ls_history;
+
 typedef struct {
     plant pl;
     gripper gr;                 /* not driven in this mode; its columns stay in the row */
@@ -29,9 +37,14 @@ typedef struct {
     int quanta_per_s;
     uint32_t expected;          /* bit m: member m is one of this session's */
     uint32_t live;              /* bit m: member m takes part (expected, not lost) */
+    ls_history to_axis[LS_LINKS], to_main[LS_LINKS];   /* for the status (lab page) */
 } ls_world;
 
 void ls_world_init (ls_world *w, uint64_t seed, int sample_hz, FILE *trace);
+/* The status after quantum k, one JSON object (the lab page's view of the five
+   machines): time, each member taking part or lost, per axis the plant's state
+   and the words that last crossed its link each way, with their quanta. */
+void ls_world_status (FILE *f, const ls_world *w, uint64_t k);
 void ls_world_step (ls_world *w, uint64_t k, const ls_up *const ups[LS_MEMBERS],
                     const ls_event *const events[LS_MEMBERS], ls_down downs[LS_MEMBERS]);
 

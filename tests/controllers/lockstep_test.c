@@ -95,6 +95,14 @@ static void world_boundary (void)
     for (char *p = text; *p; p++) rows += *p == '\n';
     CHECK_EQ ("trace rows: header + 2 samples x 4 axes + 1 DAC row", rows, 10);
     CHECK_EQ ("the trace starts with the usual columns", strncmp (text, plant_row_columns, strlen (plant_row_columns)), 0);
+    char *status = NULL;
+    size_t status_size = 0;
+    FILE *sf = open_memstream (&status, &status_size);
+    ls_world_status (sf, &w, 1);
+    fclose (sf);
+    CHECK_EQ ("the status names the word the 11/23 sent to z", strstr (status, "\"to_11_03\":[[1,511]]") != NULL, 1);
+    CHECK_EQ ("the status: every member running", strstr (status, "\"y\":\"running\"") != NULL, 1);
+    free (status);
     w.live &= ~(1u << 1);                       /* y's machine is gone */
     up_ptrs[1] = NULL;
     for (int m = 0; m < LS_MEMBERS; m++) { ups[m] = up_for (2); ups[m].n_events = 0; }

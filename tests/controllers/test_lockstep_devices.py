@@ -1,6 +1,7 @@
 """The lock-step's devices at the bus, with machine code deposited by SIMH (no FORTH):
 two simulators (the 11/23 as MAIN, an 11/03 as X) joined to build/lockstep-coordinator.
 pdp11-devices/bus/link_dev.c and simh/lockstep_dev.c say what they implement."""
+import json
 import subprocess
 
 import pytest
@@ -32,7 +33,8 @@ def start(member, socket, program, after, directory, name):
 
 
 def run_pair(tmp_path, main_program, main_after, axis_program, axis_after):
-    with Coordinator(tmp_path, trace="trace.csv", members=("x", "main")) as c:
+    with Coordinator(tmp_path, trace="trace.csv", members=("x", "main"),
+                     status=tmp_path / "status.json") as c:
         axis = start("x", c.socket, axis_program, axis_after, tmp_path, "x")
         main = start("main", c.socket, main_program, main_after, tmp_path, "main")
         main_out, _ = main.communicate(timeout=60)
@@ -56,6 +58,11 @@ def test_a_word_crosses_the_link_both_ways_and_the_axis_moves(tmp_path):
     # counter (its own, no multiplexer) ran while the 11/03 read it
     assert any(row.split(",")[1:3] == ["X", str(0o3000)] for row in trace.splitlines()[1:])
     assert axis["R2"] != 0 and axis["R2"] > 0o100000      # moving down: a negative count
+    # the coordinator's status (the lab's page): both words, the 11/03 x lost at the end
+    status = json.loads((tmp_path / "status.json").read_text())
+    x = status["axes"][0]
+    assert [w for _, w in x["to_11_03"]] == [0o12345] and [w for _, w in x["to_11_23"]] == [0o12346]
+    assert status["members"]["y"] == "absent"
 
 
 def test_a_lost_11_03_sets_peer_lost_and_is_reported_on_the_11_23(tmp_path):
