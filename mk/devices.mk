@@ -20,8 +20,9 @@ DEV_OBJ    := $(BUILD)/obj/devices
 DEV_DIR    := pdp11-devices
 DEV_KINDS  := bus plant lab simh lockstep
 DEV_HDRS   := $(wildcard $(DEV_DIR)/*.h $(DEV_KINDS:%=$(DEV_DIR)/%/*.h))
-# lockstep/coordinator.c is a program of its own (build/lockstep-coordinator), not a device
-DEV_GLUE   := $(filter-out $(DEV_DIR)/lockstep/coordinator.c,$(wildcard $(DEV_KINDS:%=$(DEV_DIR)/%/*.c)))
+# lockstep/coordinator.c and barrier_bench.c are programs of their own, not devices
+DEV_GLUE   := $(filter-out $(DEV_DIR)/lockstep/coordinator.c $(DEV_DIR)/lockstep/barrier_bench.c,\
+                $(wildcard $(DEV_KINDS:%=$(DEV_DIR)/%/*.c)))
 DEV_OBJS   := $(patsubst $(DEV_DIR)/%.c,$(DEV_OBJ)/%.o,$(DEV_GLUE))
 DEV_INCS   := -I $(DEV_DIR) $(DEV_KINDS:%=-I $(DEV_DIR)/%)
 ROBOT_SYS  := $(DEV_OBJ)/pdp11_sys_stock.o
@@ -88,6 +89,9 @@ LOCKSTEP_PURE := $(filter $(DEV_OBJ)/plant/% $(DEV_OBJ)/lockstep/%,$(PURE_OBJS))
 $(BUILD)/lockstep-coordinator: $(DEV_DIR)/lockstep/coordinator.c $(LOCKSTEP_PURE) $(DEV_HDRS)
 	@$(CC) $(PLANT_CFLAGS) $(DEV_INCS) -o $@ $< $(LOCKSTEP_PURE) -lm
 
+$(BUILD)/barrier-bench: $(DEV_DIR)/lockstep/barrier_bench.c $(DEV_OBJ)/lockstep/wire_io.o $(DEV_HDRS)
+	@$(CC) $(PLANT_CFLAGS) $(DEV_INCS) -o $@ $< $(DEV_OBJ)/lockstep/wire_io.o
+
 $(BUILD)/lockstep_test: tests/controllers/lockstep_test.c $(LOCKSTEP_PURE) $(DEV_HDRS)
 	@$(CC) $(PLANT_CFLAGS) $(DEV_INCS) -o $@ $< $(LOCKSTEP_PURE) -lm
 
@@ -100,7 +104,7 @@ bench-devices: $(BUILD)/pdp11 $(BUILD)/pdp11-plain $(BUILD)/pdp11-guided $(BUILD
 BENCHES += bench-devices
 .PHONY: bench-devices
 
-bench-controllers: $(BUILD)/pdp11 $(BUILD)/lockstep-coordinator venv  ## the five machines of issue 21: aggregate rate at full speed, the lock-step's overhead
+bench-controllers: $(BUILD)/pdp11 $(BUILD)/lockstep-coordinator $(BUILD)/barrier-bench venv  ## the five machines of issue 21: aggregate rate at full speed, the lock-step's overhead
 	@$(PY) -m harness.bench.controllers_bench
 BENCHES += bench-controllers
 .PHONY: bench-controllers

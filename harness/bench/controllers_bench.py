@@ -13,8 +13,11 @@ LSI-11/03s at once:
 Each variant runs ROUNDS times, taking turns; the median wall time counts (the
 host is shared). Printed: the aggregate instruction rate of the five (5 x steps
 / wall), the overhead of the lock-step, its cost per boundary, and the same with
-0.1 ms quanta (what a shorter quantum would cost). Instruction counts are exact;
-wall times depend on the host and its load.
+0.1 ms quanta (what a shorter quantum would cost). Then build/barrier-bench: one
+boundary with nothing simulated, the design built (a coordinator process, Unix
+sockets) against a shared-memory futex barrier (the other design issue 21
+allowed; docs/controllers.md says why the coordinator). Instruction counts are
+exact; wall times depend on the host and its load.
 
 python -m harness.bench.controllers_bench [--one lockstep|free] [--quanta N]
   --one runs a single session of one variant (for timing from outside)."""
@@ -27,10 +30,11 @@ from pathlib import Path
 
 from harness.controllers.coordinator import CONTROLLERS, MEMBERS, Coordinator, member_settings
 from harness.machine import simh
-from harness.machine.build import CPU_1103, MACHINE_INI, PDP11, RATE
+from harness.machine.build import BUILD, CPU_1103, MACHINE_INI, PDP11, RATE
 
 SECONDS = 10
 ROUNDS = 3
+BARRIER_ROUNDS = 20000
 DAC0 = 0o170440
 # 1$: INC R0 ; MOV R0,R1 ; BIC #177400,R1 ; BNE 1$ ; MOV R0,@#170440 ; BR 1$
 LOOP = [0o005200, 0o010001, 0o042701, 0o177400, 0o001373, 0o010037, DAC0, 0o000770]
@@ -96,6 +100,17 @@ def report(walls):
               f"({boundaries:,} boundaries)")
 
 
+def barrier_report():
+    runs = [dict(line.split() for line in subprocess.run(
+        [str(BUILD / "barrier-bench"), str(BARRIER_ROUNDS)], capture_output=True, text=True,
+        check=True).stdout.splitlines()) for _ in range(ROUNDS)]
+    star = statistics.median(float(r["star"]) for r in runs)
+    futex = statistics.median(float(r["futex"]) for r in runs)
+    print(f"one boundary of five processes, nothing simulated ({BARRIER_ROUNDS:,} rounds, "
+          f"median of {ROUNDS}): coordinator over Unix sockets (built) {star:.1f} us, "
+          f"shared-memory futex barrier {futex:.1f} us")
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--one", choices=("lockstep", "free"))
@@ -105,6 +120,7 @@ def main(argv=None):
         print(f"{session(args.one == 'lockstep', args.quanta):.3f} s wall")
         return 0
     report(measure())
+    barrier_report()
     return 0
 
 
