@@ -97,14 +97,10 @@ $(BUILD)/lockstep_test: tests/controllers/lockstep_test.c $(LOCKSTEP_PURE) $(DEV
 
 # pdp11-stock too: the reference the benchmark and tests/test_simh_stock.py use.
 ALL_PRODUCTS += $(BUILD)/pdp11 $(BUILD)/pdp11-plain $(BUILD)/pdp11-timed $(BUILD)/plant_test $(BUILD)/gripper_test $(BUILD)/pdp11-stock \
-                $(BUILD)/lockstep-coordinator $(BUILD)/lockstep_test
+                $(BUILD)/lockstep-coordinator $(BUILD)/lockstep_test $(BUILD)/barrier-bench
 
 bench-devices: $(BUILD)/pdp11 $(BUILD)/pdp11-plain $(BUILD)/pdp11-guided $(BUILD)/pdp11-stock $(BUILD)/kernel.lda $(PRISTINE_DSK) venv  ## the C devices' cost: plain, guided and stock builds
 	@$(PY) -m harness.bench.bench_devices
 BENCHES += bench-devices
 .PHONY: bench-devices
 
-bench-controllers: $(BUILD)/pdp11 $(BUILD)/lockstep-coordinator $(BUILD)/barrier-bench venv  ## the five machines of issue 21: aggregate rate at full speed, the lock-step's overhead
-	@$(PY) -m harness.bench.controllers_bench
-BENCHES += bench-controllers
-.PHONY: bench-controllers
