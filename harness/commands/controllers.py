@@ -27,7 +27,8 @@ Boot the five machines in lock-step on one plant: the robot's PDP-11/23, its
 console in this terminal as `make run` gives it (on your working disk), and the
 LSI-11/03s of axes x, y, z, t (each on a fresh copy of build/robot.dsk, its
 kernel build/kernel-1103.lda), typed their boot lines (1080 LOAD, n Axis.Run)
-when the disk holds block 1080. Type 1090 LOAD at the 11/23 for its link words.
+when the disk holds block 1080. The 11/23 gets its link words with the boot line
+harness/controllers/boot_lines.py names (docs/controllers.md, "Boot lines").
 
 Each 11/03's console: in another terminal, `python -m harness controllers
 console x` (y, z, t); ^] leaves it, ^E there gives that 11/03's sim> (while an

@@ -24,7 +24,7 @@ from pathlib import Path
 
 import pexpect
 
-from harness.controllers.boot_lines import axis_boot_lines
+from harness.controllers.boot_lines import MAIN_BOOT_LINES, axis_boot_lines
 from harness.controllers.bridge import ConsoleBridge
 from harness.controllers.coordinator import CONTROLLERS, Coordinator, member_settings
 from harness.controllers.members import SESSION_OVER
@@ -90,8 +90,10 @@ class Launch:
         for name, child in self.children.items():
             say(f"11/03 {name}: pid {child.pid}; its console: python -m harness "
                 f"controllers console {name} (^] leaves it, ^E gives its sim>)")
-        say("this terminal is the 11/23's console; 1090 LOAD gives it the words that "
-            "drive the axes through the 11/03s")
+        say(f"this terminal is the 11/23's console; {' then '.join(MAIN_BOOT_LINES)} gives it "
+            "the words that drive the axes through the 11/03s")
+        say("the plant is the coordinator's (its rack switched on): SET PLANT at this sim> "
+            "changes only the 11/23's own plant, which nothing drives in this mode")
         extra = {"busy_wait": busy_wait} if busy_wait else {}
         return session(PDP11, disk, fast=fast, kernel=KERNEL,
                        setup="".join(f"{c}\n" for c in member_settings(

@@ -2,10 +2,12 @@
 the 11/23's console in front; an 11/03's console reached from another terminal; a
 killed 11/03 reported at the 11/23's console within a second, the others going on,
 and the launcher leaving cleanly at BYE."""
+import json
 import os
 import signal
 import sys
 import time
+import urllib.request
 
 import pexpect
 import pytest
@@ -70,3 +72,24 @@ def test_an_11_03_console_is_reached_from_another_terminal(five):
     other.expect(pexpect.EOF)
     assert leave(child) == 0
     assert "6 7 * . 42  ok" in (session / "z.log").read_text(encoding="latin-1")
+
+
+def test_the_lab_page_shows_the_five_machines(tmp_path):
+    disk = fresh_disk(tmp_path, "main.dsk", source=PRISTINE_DISK)
+    child = harness("controllers", "launch", "--fast", "--no-boot-lines", "--lab", "--busy-wait",
+                    "2", "--disk", str(disk), "--session-dir", str(tmp_path / "session"))
+    child.expect(r"the five machines' page: (http://127\.0\.0\.1:\d+/\?token=\w+)")
+    url = child.match.group(1)
+    child.expect(" ok\r\n")
+    base, token = url.split("/?token=")
+    deadline = time.monotonic() + 30
+    while True:                                   # the first status comes at 0.1 s simulated
+        with urllib.request.urlopen(f"{base}/status?token={token}", timeout=10) as r:
+            view = json.load(r)
+        if view["started"] or time.monotonic() > deadline:
+            break
+        time.sleep(0.1)
+    assert [m["state"] for m in view["machines"]] == ["running"] * 5
+    assert [a["axis"] for a in view["servo"]] == list("XYZT")
+    assert any(" ok" in m["console"] for m in view["machines"] if m["name"] == "x")
+    assert leave(child) == 0
