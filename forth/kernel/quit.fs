@@ -3,8 +3,9 @@
 S-LIMIT CONSTANT S-LIMIT  ( -- a )
 2 ARRAY WHAT  ( -- a ) \ the word being interpreted: address, length
 VARIABLE 'ON-ERROR  ( -- a ) \ xt run after every error (0 = none)
-: ?STACK  ( -- )
-  SP@ S0 U> IF -4 THROW THEN  SP@ S-LIMIT 16 + U< IF -3 THROW THEN ;
+CODE ?STACK  ( -- )  \ error -4 below the empty stack, -3 within 8 cells of full
+  S0 # S CMP,  HI IF,  -4 THROW,  THEN,  S-LIMIT 16 + # S CMP,  LO IF,  -3 THROW,  THEN,
+  NEXT,  END-CODE
 \ Control structures typed at the terminal (0 3 DO I . -1 +LOOP): an opening
 \ IF BEGIN DO ?DO in interpret state starts a temporary definition, compiled
 \ 1 KB below the dictionary's end, not at HERE: what it lays down with , or
