@@ -243,5 +243,6 @@ VOCABULARY FORTH  ( -- ) \ SEARCH EXT: the kernel's vocabulary
 : VOC-CONTEXT  ( wid -- )  \ the first word list := wid
   DUP CONTEXT !  FORTH-BODY <> #ORDER @ 2 < AND IF FORTH-BODY CONTEXT 2+ !  2 #ORDER ! THEN ;
 VOCABULARY ASSEMBLER  ( -- ) \ TOOLS EXT: CODE's vocabulary
+' ASSEMBLER >BODY CONSTANT ASSEMBLER-BODY  ( -- a )
 : DEFINITIONS  ( -- )  CONTEXT @ CURRENT ! ;  \ SEARCH
 \ CODE END-CODE ;CODE: forth/kernel/code.fs (they need the resident assembler)
