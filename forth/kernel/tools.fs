@@ -43,7 +43,7 @@ VARIABLE COLUMN  ( -- a )
     DUP 'DOVAR = IF DROP ." is CREATE / VARIABLE, body at " >BODY .OCTAL CR EXIT THEN
     DUP 'DOCON = IF DROP ." is CONSTANT " >BODY @ . CR EXIT THEN
     ." has DOES> code at " .OCTAL ." , body at " >BODY .OCTAL CR EXIT THEN
-  ." is CODE at " DUP .OCTAL  \ in mnemonics once blocks 1090-1092 (a disassembler) are loaded
+  ." is CODE at " DUP .OCTAL  \ in mnemonics once blocks 1090-1097 (a disassembler) are loaded
   S" DISASSEMBLE-CODE" FORTH-BODY SEARCH-WORDLIST IF EXECUTE EXIT THEN
   ." : " 8 0 DO DUP @ .OCTAL SPACE 2+ LOOP DROP CR ." (1090 LOAD: SEE then disassembles)" CR ;
 

@@ -1,5 +1,5 @@
 """SEE of a CODE word (issue 18): the octal and the block to load without the
-disassembler; with blocks 1090-1096 loaded, PDP-11 mnemonics. The reference is
+disassembler; with blocks 1090-1097 loaded, PDP-11 mnemonics. The reference is
 independent of both the kernel's assembler and the blocks: SIMH's own EXAMINE -M
 disassembles the same addresses in the same running machine, for every CODE
 word of the kernel, the 1983 servo's Interrupt.Servo (block 1008) and a table of
@@ -101,6 +101,8 @@ def test_every_code_word_disassembles_as_simh_does(robot):
     notes = {n for _, _, ns in ours.values() for n in ns}
     assert {"Desire.Pos+4", "Velocity+4", "Delay.Left+4"} <= notes
     assert ours[0o105402][2]  # @#a,X(R1): the source's word, then the destination's
+    # an I/O address is named by the block's constant for it (block 1000's CON)
+    assert {"CntOut", "CntIn", "VelOut"} <= notes
 
 
 def test_instructions_neither_uses(robot):
