@@ -70,6 +70,15 @@ void rl_one_writer_install (void);
 /* QUIT, EXIT and BYE at sim> FLUSH the FORTH's blocks first (leave_check.c). */
 void leave_check_install (void);
 
+/* Interrupts taken per vector (interrupt_count.c); a breakpoint on an I/O
+   register (io_break.c: SET LAB IOBREAK). */
+void interrupt_count_install (void);
+uint32 interrupt_count (int32 vector);
+void interrupt_count_write (FILE *f, const char *separator);
+t_stat io_break_set (char *cptr);
+t_stat io_break_clear (void);
+void io_break_show (FILE *st);
+
 /* The lab bench's device (lab.c): its part of a rate change. */
 void lab_rate_changed (int32 old_rate);
 

@@ -210,10 +210,11 @@ function rebuildPlot() {
       points: { show: false },
     };
   });
+  const fs = lab.fontScale || 1;    // the text size (lab-teach.js)
   const axisStyle = { stroke: "#8b949e", grid: { stroke: "#263040", width: 1 }, ticks: { stroke: "#30363d" },
-    font: '12px "DejaVu Sans", sans-serif' };
+    font: `${Math.round(12 * fs)}px "DejaVu Sans", sans-serif` };
   const axes = [{ ...axisStyle, values: (u, v) => v.map((t) => `${t.toFixed(2)} s`) }].concat(
-    scales.map((scale, k) => ({ ...axisStyle, scale, show: k < 2, stroke: colors[k], side: k ? 1 : 3, size: 56,
+    scales.map((scale, k) => ({ ...axisStyle, scale, show: k < 2, stroke: colors[k], side: k ? 1 : 3, size: Math.round(56 * fs),
       grid: { ...axisStyle.grid, show: k === 0 } })));
   const r = plotBox.getBoundingClientRect();
   scope.plot = new uPlot({
@@ -387,3 +388,4 @@ byId("scope-overlay").addEventListener("change", async (e) => {
 });
 window.addEventListener("resize", () => { lab.dirty = true; });
 scope.start = fillChannels;          // lab.js, after the hello
+scope.restyle = () => { if (scope.plot) rebuildPlot(); };   // lab-teach.js: a new text size
