@@ -74,7 +74,7 @@ void leave_check_install (void);
    register (io_break.c: SET LAB IOBREAK). */
 void interrupt_count_install (void);
 uint32 interrupt_count (int32 vector);
-void interrupt_count_write (FILE *f, const char *separator);
+void interrupt_count_write (FILE *f, const char *before);
 t_stat io_break_set (char *cptr);
 t_stat io_break_clear (void);
 void io_break_show (FILE *st);

@@ -49,6 +49,17 @@ class WordIndex:
         found = [a for a, n in self.by_address.items() if n.upper() == name.upper()]
         return max(found) if found else None
 
+    def neighbours(self, name, count=3):
+        """The names defined just before the newest `name` (nearest first) and just
+        after it, `count` each: ([...], [...])."""
+        address = self.address_of(name)
+        if address is None:
+            return [], []
+        i = self._sorted.index(address)
+        before = self._sorted[max(0, i - count):i][::-1]
+        return ([self.by_address[a] for a in before],
+                [self.by_address[a] for a in self._sorted[i + 1:i + 1 + count]])
+
     def name_at(self, address):
         return self.by_address.get(address)
 

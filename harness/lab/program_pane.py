@@ -88,9 +88,10 @@ class ProgramPane:
         return {"t": "program", "block": block, "lines": block_lines(self.image, block),
                 "code": code, "why": None}
 
-    def where_defined(self, word):
-        """{"word", "block", "line"} of the word's definition on the disk, or None."""
-        found = word and definition(word, written_blocks(self.image))
+    def where_defined(self, word, before=(), after=()):
+        """{"word", "block", "line"} of the word's definition on the disk, or None;
+        `before` and `after` its neighbours in the dictionary (word_source.py)."""
+        found = word and definition(word, written_blocks(self.image), before, after)
         return {"word": word, "block": found[0], "line": found[1]} if found else None
 
 

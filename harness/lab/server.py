@@ -93,6 +93,7 @@ class Lab:
         io_hit = breakpoints.IO_HIT.search(self._console_tail)
         if hit or io_hit:
             self._console_tail = b""
+            self.sim.prompted.clear()         # SIMH's prompt follows: the history waits for it
             pc = int((hit or io_hit).group(1 if hit else 2), 8)
             what = io_hit.group(1).decode() if io_hit else f"Breakpoint at PC {pc:06o}"
             asyncio.ensure_future(self.show_history(what, self.words.containing(pc)))
@@ -100,8 +101,9 @@ class Lab:
     async def show_history(self, what, word):
         """The instructions before a breakpoint, each with its word, to the pages; and
         where that word was defined, for the program pane."""
-        text = await self._at_sim([f"show cpu history={breakpoints.SHOWN}"])
-        where = await asyncio.to_thread(self.program.where_defined, word)
+        text = await self._at_sim([f"show cpu history={breakpoints.SHOWN}"], stop=False)
+        where = await asyncio.to_thread(self.program.where_defined, word,
+                                        *self.words.neighbours(word)) if word else None
         self.broadcast({"t": "history", "rows": breakpoints.named_history(text, self.words),
                         "what": f"{what}, in {word}" if word else what, "where": where})
 
@@ -128,9 +130,9 @@ class Lab:
         panel as it stands (SHOW LAB PANEL writes an R row)."""
         await self._at_sim(breakpoints.STEP_LINES)
 
-    async def _at_sim(self, lines):
+    async def _at_sim(self, lines, stop=True):
         try:
-            return await self.sim.simh_lines(lines)
+            return await self.sim.simh_lines(lines, stop=stop)
         except asyncio.TimeoutError:                  # SIMH busy (a long STEP, a LOAD of
             self.on_console(b"\r\n[lab] SIMH did not come to its prompt within 10 s"
                             b"\r\n")                   # its own): nothing more is typed

@@ -253,7 +253,7 @@ static void write_panel (void)
         fprintf (out (), ",%o", (int) device_reg (&aav_dev, "DAC", i));
     for (int i = 0; i < panel_n; i++)
         fprintf (out (), ",%o", M[panel_at[i] >> 1]);
-    fprintf (out (), "\nI,%.6f,", clock_time ());
+    fprintf (out (), "\nI,%.6f", clock_time ());
     interrupt_count_write (out (), ",");
     fputc ('\n', out ());
 }
@@ -530,7 +530,7 @@ static t_stat lab_show_panel (FILE *st, UNIT *uptr, int32 val, void *desc)
 
 static t_stat lab_show_interrupts (FILE *st, UNIT *uptr, int32 val, void *desc)
 {
-    fprintf (st, "interrupts taken (vector=count): ");
+    fprintf (st, "interrupts taken (vector=count):");
     interrupt_count_write (st, " ");
     fputc ('\n', st);
     return SCPE_OK;

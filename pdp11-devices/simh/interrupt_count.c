@@ -77,13 +77,10 @@ uint32 interrupt_count (int32 vector)
     return vector >= 0 && (vector >> 2) < VECTORS ? taken[vector >> 2] : 0;
 }
 
-/* `vector=count` (vector octal) for each vector taken at least once, comma-separated. */
-void interrupt_count_write (FILE *f, const char *separator)
+/* `vector=count` (vector octal) for each vector taken at least once, each after `before`. */
+void interrupt_count_write (FILE *f, const char *before)
 {
-    int first = 1;
     for (int v = 0; v < VECTORS; v++)
-        if (taken[v]) {
-            fprintf (f, "%s%o=%u", first ? "" : separator, v << 2, taken[v]);
-            first = 0;
-        }
+        if (taken[v])
+            fprintf (f, "%s%o=%u", before, v << 2, taken[v]);
 }
