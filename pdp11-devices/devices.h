@@ -48,6 +48,9 @@ void plant_dev_init (void);
 void plant_dev_rate_changing (int32 old_rate);    /* integrate up to now, old time */
 void plant_dev_rate_changed (int32 old_rate);     /* pending samples keep their times */
 void plant_dev_command_done (void);               /* after each SCP command */
+void rack_hint_enable (int on);                   /* SET PLANT HINT (rack_hint.c) */
+int rack_hint_enabled (void);
+void rack_hint_dac (int axis, int code);          /* at each DAC write */
 
 /* Text files written by a device (text_attach.c): `what` starts the error message. */
 t_stat device_attach_text (UNIT *uptr, char *cptr, const char *what);

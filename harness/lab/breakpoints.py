@@ -18,7 +18,7 @@ from harness.lab.sim_commands import refusal
 HISTORY = 64                      # SIMH's least (HIST_MIN); enough to see the way in
 SHOWN = 24                        # history lines sent to the page
 HIT = re.compile(rb"Breakpoint, PC: ([0-7]{6})")
-IO_HIT = re.compile(rb"(I/O break: [^\r\n]*) by the instruction at PC ([0-7]{6})\r*\n")
+IO_HIT = re.compile(rb"(I/O break: [^\r\n]*) at PC ([0-7]{6})\r*\n")
 IO_REFUSED = re.compile(r"IOBREAK: [^\r\n]*")
 IO_PAGE = 0o160000, 0o200000      # the program's addresses of the I/O page
 IO_PAGE_22 = 0o17760000           # the same registers as SIMH's 22-bit addresses

@@ -96,14 +96,17 @@ class Lab:
             self.sim.prompted.clear()         # SIMH's prompt follows: the history waits for it
             pc = int((hit or io_hit).group(1 if hit else 2), 8)
             what = io_hit.group(1).decode() if io_hit else f"Breakpoint at PC {pc:06o}"
-            asyncio.ensure_future(self.show_history(what, self.words.containing(pc)))
+            asyncio.ensure_future(self.show_history(what, self.words.containing(pc), pc))
 
-    async def show_history(self, what, word):
+    async def show_history(self, what, word, pc):
         """The instructions before a breakpoint, each with its word, to the pages; and
-        where that word was defined, for the program pane."""
+        where that word was defined, for the program pane (which also marks the PC's
+        row of the listing)."""
         text = await self._at_sim([f"show cpu history={breakpoints.SHOWN}"], stop=False)
         where = await asyncio.to_thread(self.program.where_defined, word,
                                         *self.words.neighbours(word)) if word else None
+        if where:
+            where["pc"] = f"{pc:06o}"
         self.broadcast({"t": "history", "rows": breakpoints.named_history(text, self.words),
                         "what": f"{what}, in {word}" if word else what, "where": where})
 

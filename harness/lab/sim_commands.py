@@ -48,7 +48,7 @@ SETTABLE = {   # device: (its modifiers in table order, those the page may set)
     "CPU": (CPU_MODIFIERS, {"HISTORY"}),
     "PLANT": (("X", "Y", "Z", "T", "KV", "TAU", "AMAX", "VMAX", "OFFSET", "PMIN", "PMAX",
                "WALK", "POS", "GRIPPER", "OBJECT", "PULLOUT", "OPENING", "PARTX", "PARTY",
-               "PARTZ", "SEED", "SAMPLE", "POWER"), None),     # None: all
+               "PARTZ", "SEED", "SAMPLE", "POWER", "HINT"), None),     # None: all
     "CLK": (("RATE", "REALTIME", "NOREALTIME", "TIMED", "NOTIMED"), None),
     "LAB": (("SPEED", "IOBREAK", "NOIOBREAK"), None),
 }

@@ -3,7 +3,7 @@
    SIMH 3.8.1's PDP-11 breakpoints stop on execution only. This one stops the
    machine after the CPU reads or writes one I/O page register, with a line
    naming the register, the access, the value and the instruction's PC:
-     I/O break: write 004000 to 170440 (AAV11-A DAC X) by the instruction at PC 024614
+     I/O break: write 004000 to 170440 (AAV11-A DAC X) at PC 024614
    then SIMH's own "Simulation stopped" and sim>; CONT goes on from the next
    instruction, so nothing in simulated time changes.
 
@@ -14,7 +14,8 @@
    routine, then, for the watched address and only while the CPU runs (an
    EXAMINE at sim> reads through the same routine), prints the line and sets
    the CPU's cpu_astop, which stops it before the next instruction. The PC is
-   MMR2's, which the CPU sets to each instruction's address as it fetches it.
+   the accessing instruction's: MMR2's, which the CPU sets to each
+   instruction's address as it fetches it.
 
    SET LAB IOBREAK=addr   addr octal, even: 160000-177776 (or 17760000-17777776)
                           where a device of the table answers; another refused
@@ -68,7 +69,7 @@ static void hit (int32 pa, const char *what, const char *to, int32 value)
     if (!sim_is_running || (io_address (pa) & ~1) != watched)
         return;
     register_name (name, watched);
-    printf ("\r\nI/O break: %s %06o %s %06o (%s) by the instruction at PC %06o\r\n",
+    printf ("\r\nI/O break: %s %06o %s %06o (%s) at PC %06o\r\n",
             what, (int) (value & 0177777), to, (int) io_address (pa), name, (int) (MMR2 & 0177777));
     fflush (stdout);
     cpu_astop = 1;                       /* stop before the next instruction */

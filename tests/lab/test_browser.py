@@ -234,6 +234,44 @@ def test_a_breakpoint_on_a_word_stops_the_machine_and_shows_the_history(page):
 
 
 @full_session
+def test_an_io_breakpoint_shows_the_history_and_the_line_and_steps_one_instruction(page):
+    """The servo's write of DAC X (SET LAB IOBREAK=170440, io_break.c) stops the
+    machine: the history before it, and the program pane on block 1008's line 1, where
+    Interrupt.Servo is defined; Step 1 instruction moves the PC; Clear goes on."""
+    if js(page, "window.lab.status.state") == "pause":
+        click(page, "#pause")                                  # Run
+    page.find_element(By.ID, "iobreak-address").send_keys("170440")
+    click(page, '#iobreak-form button[type="submit"]')
+    wait_for("the history", lambda: page.find_element(By.ID, "history").is_displayed())
+    what = page.find_element(By.ID, "history-what").text
+    assert "I/O break: write" in what and "170440 (AAV11-A DAC X)" in what, what
+    assert page.find_element(By.ID, "state").text == "STOPPED sim>"
+    wait_for("block 1008's line 1 marked", lambda: js(page, "window.lab.program.block") == 1008
+             and page.find_elements(By.CSS_SELECTOR, '#program-text .pl.current[data-line="1"]'))
+    assert "stopped in Interrupt.Servo: defined in block 1008, line 1" in \
+        page.find_element(By.ID, "program-where").text
+    marked = page.find_elements(By.CSS_SELECTOR, "#program-text .pl-code.pc")   # its PC's row
+    assert len(marked) == 1 and "170440" in marked[0].text, [m.text for m in marked]
+    for width, height in ((1280, 720), (1920, 1080)):
+        with projector(page, width, height):
+            assert_on_screen(page, width, height, ("console-panel", "program-panel",
+                                                   "servo-panel", "scope-panel"))
+            page.save_screenshot(str(ARTIFACTS / f"lab-iobreak-{width}.png"))
+    click(page, "#history-close")
+    pcs = [js(page, "window.lab.panel.registers[7].value")]
+    for _ in range(3):
+        click(page, "#stepi")
+        pcs.append(wait_for("the next PC", lambda: (lambda pc: pc not in pcs and pc)(
+            js(page, "window.lab.panel.registers[7].value"))))
+    assert "Step expired" in js(page, "window.lab.screen()")
+    page.save_screenshot(str(ARTIFACTS / "lab-stepped.png"))
+    click(page, "#nobreak")
+    wait_for("the run again", lambda: page.find_element(By.ID, "state").text.startswith("RUN"))
+    assert js(page, "window.lab.stoppedIn") is None or not js(page, "window.lab.status.prompt")
+    click(page, '#views button[data-view="robot-panel"]')
+
+
+@full_session
 def test_the_asn_shows_its_trial_steps_payoff_and_weights(page):
     """Blocks 1070-1078 (docs/learning.md) after the move test's Set.Up.Robot."""
     assert js(page, "document.getElementById('asn').hidden")

@@ -126,8 +126,8 @@ def test_an_io_breakpoint_and_instruction_steps_from_the_page(lab_server):
         await page.until(r"170441 is not an even I/O page address", start)
         await page.ws.send_str(json.dumps({"t": "iobreak", "address": "170460"}))
         await page.until(r"not set: IOBREAK: no device answers at 170460[\s\S]*cont", start)
-        ticking = await until_message(page, lambda m: m["t"] == "data" and m["panel"]
-                                      and m["panel"].get("interrupts"))
+        ticking = await until_message(page, lambda m: m["t"] == "data" and m["panel"] and any(
+            v["vector"] == "100" and v["per_s"] == 60.0 for v in m["panel"].get("interrupts", [])))
         await asyncio.sleep(1.5)                             # the lab reads the dictionary
         await page.ws.send_str(json.dumps({"t": "iobreak", "address": "170440"}))
         history = await until_message(page, lambda m: m["t"] == "history")
@@ -150,6 +150,8 @@ def test_an_io_breakpoint_and_instruction_steps_from_the_page(lab_server):
     assert rates["060"]["total"] > 0
     assert re.search(r"I/O break: write [0-7]{6} to 170440 \(AAV11-A DAC X\)", history["what"])
     assert history["what"].endswith("in Interrupt.Servo")
-    assert history["where"] == {"word": "Interrupt.Servo", "block": 1008, "line": 1}
-    assert history["rows"][-1][2].endswith("170440(R1)") or "170440" in history["rows"][-1][2]
+    last = history["rows"][-1]                           # the instruction that wrote DAC X
+    assert "170440" in last[2] and last[3] == "Interrupt.Servo"
+    assert history["where"] == {"word": "Interrupt.Servo", "block": 1008, "line": 1,
+                                "pc": last[0]}
     assert len(pcs) == 2 and said.count("Step expired") == 2

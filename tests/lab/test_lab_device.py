@@ -228,8 +228,8 @@ def test_an_io_breakpoint_stops_after_the_access_and_changes_nothing(tmp_path):
                    "set lab iobreak=170440\nset cpu history=64\n"
                    f"step {RUN_INSTRUCTIONS}\nshow cpu history=1\nexamine 170440\n"
                    "set lab noiobreak\nshow time\n", keyboard=TYPED, timeout=120)
-    hit = re.search(r"I/O break: write ([0-7]{6}) to 170440 \(AAV11-A DAC X\) by the "
-                    r"instruction at PC ([0-7]{6})", out)
+    hit = re.search(r"I/O break: write ([0-7]{6}) to 170440 \(AAV11-A DAC X\) at PC ([0-7]{6})",
+                    out)
     assert hit, out
     assert out.count("I/O break:") == 1 and "Simulation stopped" in out
     last = out.split("show cpu history=1")[-1] if "show cpu" in out else out

@@ -72,6 +72,12 @@ function markLine() {
     row.classList.toggle("current", here);
     if (here) row.scrollIntoView({ block: "nearest" });
   });
+  const pc = broke && at !== null ? where.pc : null;      // the instruction it stopped at
+  document.querySelectorAll("#program-text .pl-code").forEach((row) => {
+    const here = pc !== null && row.textContent.trim().startsWith(pc + " ");
+    row.classList.toggle("pc", here);
+    if (here) row.scrollIntoView({ block: "nearest" });
+  });
   document.getElementById("program-where").textContent = title;
 }
 
