@@ -49,7 +49,6 @@ void plant_dev_rate_changing (int32 old_rate);    /* integrate up to now, old ti
 void plant_dev_rate_changed (int32 old_rate);     /* pending samples keep their times */
 void plant_dev_command_done (void);               /* after each SCP command */
 void rack_hint_enable (int on);                   /* SET PLANT HINT (rack_hint.c) */
-int rack_hint_enabled (void);
 void rack_hint_dac (int axis, int code);          /* at each DAC write */
 
 /* Text files written by a device (text_attach.c): `what` starts the error message. */

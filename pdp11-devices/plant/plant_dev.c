@@ -394,9 +394,8 @@ int plant_dev_powered (void)
 
 static t_stat plant_show_global (FILE *st, UNIT *uptr, int32 val, void *desc)
 {
-    fprintf (st, "seed=%llu, sample=%d/s, power=%s, hint=%s, time=%.6fs",
-             (unsigned long long) robot_plant.seed, sample_hz, robot_plant.power ? "on" : "off",
-             rack_hint_enabled () ? "on" : "off", clock_time ());
+    fprintf (st, "seed=%llu, sample=%d/s, power=%s, time=%.6fs", (unsigned long long) robot_plant.seed,
+             sample_hz, robot_plant.power ? "on" : "off", clock_time ());
     return SCPE_OK;
 }
 

@@ -39,11 +39,6 @@ void rack_hint_enable (int on)
     rest ();
 }
 
-int rack_hint_enabled (void)
-{
-    return enabled;
-}
-
 void rack_hint_dac (int axis, int code)
 {
     static const char names[] = "XYZT";
