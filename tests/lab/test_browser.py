@@ -194,6 +194,9 @@ def test_the_page_fits_both_projectors_without_scrolling(page, width, height):
         assert js(page, "window.lab.panel.registers.length") == 8
         box = js(page, "document.getElementById('front-panel').getBoundingClientRect().toJSON()")
         assert box["bottom"] <= height, "the front panel is cut off"
+        row, servo = (js(page, f"document.getElementById('{e}').getBoundingClientRect().bottom")
+                      for e in ("break-row", "servo-panel"))
+        assert row <= servo, "the breakpoint row is below the servo panel's fold"
         low, high = js(page, "[window.lab.scope.plot.scales.counts.min, window.lab.scope.plot.scales.counts.max]")
         shown = [v for v in js(page, "window.lab.scope.plot.data[1]") if v is not None]
         assert low <= min(shown) and max(shown) <= high     # the scope's counts all in sight

@@ -26,9 +26,15 @@
         `${cell(name, "rn")}${cell(d.value, "rv")}</div>`;
     }).join("");
     const loading = p.loading ? `loading block ${p.loading.block} line ${p.loading.line}` : "";
-    const rates = (p.interrupts || []).map((v) =>
-      `<span title="${esc(v.device)}: ${v.total} taken since power-up">${cell(esc(v.device), "rr")} ` +
-      `${v.vector} ${cell(v.per_s === null ? "\u2014" : v.per_s, "rv")}</span>`).join(" \u00b7 ");
+    const groups = new Map();        // per board: DL11 060 0 064 0 KW11-L 100 60 ...
+    for (const v of p.interrupts || []) {
+      const board = v.device.split(" ")[0];
+      if (!groups.has(board)) groups.set(board, []);
+      groups.get(board).push(`<span title="${esc(v.device)}, vector ${v.vector}: ${v.total} taken ` +
+        `since power-up">${v.vector} ${cell(v.per_s === null ? "\u2014" : v.per_s, "rv")}</span>`);
+    }
+    const rates = [...groups].map(([board, list]) => `${cell(esc(board), "rr")} ${list.join(" ")}`)
+      .join(" ");                     // the boards' names (dim) part them
     box.innerHTML =
       `<div class="fp-head">PDP-11/23 ${cell(`PSW ${p.psw}`, "rv")} priority ${cell(f.priority, "rv")}` +
       ` T ${cell(f.T, "rv")} ${flags} ${cell(f.mode, "dim")}</div>` +

@@ -210,7 +210,7 @@ function rebuildPlot() {
       points: { show: false },
     };
   });
-  const fs = lab.fontScale || 1;    // the text size (lab-teach.js)
+  const fs = Math.min(lab.fontScale || 1, innerWidth <= 1500 ? 1.2 : 1.45);   // --ps (lab-teach.css)
   const axisStyle = { stroke: "#8b949e", grid: { stroke: "#263040", width: 1 }, ticks: { stroke: "#30363d" },
     font: `${Math.round(12 * fs)}px "DejaVu Sans", sans-serif` };
   const axes = [{ ...axisStyle, values: (u, v) => v.map((t) => `${t.toFixed(2)} s`) }].concat(
@@ -386,6 +386,6 @@ byId("scope-overlay").addEventListener("change", async (e) => {
   if (!file) return;
   try { scope.loadOverlay(await file.text(), file.name); } catch (err) { lab.errors.push(err.message); byId("scope-note").textContent = err.message; }
 });
-window.addEventListener("resize", () => { lab.dirty = true; });
+window.addEventListener("resize", () => { lab.dirty = true; scope.restyle(); });   // the text cap (--ps)
 scope.start = fillChannels;          // lab.js, after the hello
 scope.restyle = () => { if (scope.plot) rebuildPlot(); };   // lab-teach.js: a new text size
