@@ -224,7 +224,8 @@ def test_a_breakpoint_on_a_word_stops_the_machine_and_shows_the_history(page):
     page.execute_script("return new Promise(r => setTimeout(r, 500))")   # CONT's input flush
     page.find_element(By.CSS_SELECTOR, "#terminal textarea").send_keys("5 .\n")
     shown = wait_for("the history", lambda: page.find_element(By.ID, "history").is_displayed())
-    assert shown and page.find_element(By.ID, "state").text == "STOPPED sim>"
+    wait_for("the badge (drawn at the page's next frame)",
+             lambda: page.find_element(By.ID, "state").text == "STOPPED sim>")
     text = page.find_element(By.ID, "history-text").text
     assert "in word" in text and len(text.splitlines()) > 5
     assert all(row[3] for row in js(page, "window.lab.history"))
@@ -248,7 +249,7 @@ def test_an_io_breakpoint_shows_the_history_and_the_line_and_steps_one_instructi
     wait_for("the history", lambda: page.find_element(By.ID, "history").is_displayed())
     what = page.find_element(By.ID, "history-what").text
     assert "I/O break: write" in what and "170440 (AAV11-A DAC X)" in what, what
-    assert page.find_element(By.ID, "state").text == "STOPPED sim>"
+    wait_for("the badge", lambda: page.find_element(By.ID, "state").text == "STOPPED sim>")
     wait_for("block 1008's line 1 marked", lambda: js(page, "window.lab.program.block") == 1008
              and page.find_elements(By.CSS_SELECTOR, '#program-text .pl.current[data-line="1"]'))
     assert "stopped in Interrupt.Servo: defined in block 1008, line 1" in \

@@ -75,6 +75,8 @@ function showHistory(m) {           // SHOW CPU HISTORY's rows: PC, PSW, instruc
     `${pc} ${psw}  ${what.padEnd(36).slice(0, 36)} ${word || ""}`);
   document.getElementById("history-text").textContent =
     "PC     PSW     instruction                          in word\n" + lines.join("\n");
-  document.getElementById("history").hidden = false;
+  const box = document.getElementById("history");
+  box.hidden = false;
+  box.scrollTop = box.scrollHeight;  // the last row, the instruction it stopped after, in sight
 }
 
