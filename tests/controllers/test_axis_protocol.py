@@ -4,6 +4,7 @@ errors naming the axis; without link devices (the ordinary 11/23) Set.Up.Robot
 says so and loses nothing."""
 import pytest
 
+from harness.controllers.boot_lines import MAIN_BOOT_LINES
 from harness.machine.build import KERNEL, PDP11, PRISTINE_DISK, fresh_disk
 from harness.machine.robot import Robot
 
@@ -18,7 +19,8 @@ def main23(tmp_path_factory):
         if not need.exists():
             pytest.fail(f"build first: {need} (make)")
     with Robot(disk=fresh_disk(tmp_path_factory.mktemp("axis-protocol")), timeout=20) as r:
-        r.send("1100 LOAD")
+        for line in MAIN_BOOT_LINES:          # the lock-step run's boot line: 1100 LOAD
+            r.send(line)
         yield r
 
 

@@ -8,6 +8,7 @@ from pathlib import Path
 
 from axis1103 import lsi11  # noqa: F401  (fixture)
 
+from harness.controllers.boot_lines import axis_boot_lines
 from harness.machine.robot import numbers
 
 HOLD = 50      # counts: the hunting band measured (docs/controllers.md) with margin
@@ -23,10 +24,12 @@ def doc_sentence(pattern):
 
 def test_the_11_03_moves_its_axis_to_a_target_and_holds(lsi11):
     m = lsi11(trace=True)
+    load_line, run_line = axis_boot_lines(0)     # as the lock-step run types them
+    assert (load_line, run_line) == ("1080 LOAD", "0 Axis.Run")
     begin = m.time()
-    m.send("1080 LOAD")
+    m.send(load_line)
     load = m.time() - begin
-    assert m.send("0 Axis.Run") == "\n11/03 servo on axis x, no link: use this console"
+    assert m.send(run_line) == "\n11/03 servo on axis x, no link: use this console"
     assert m.send("0-Vel ? MaxVel ?") == "2049 0 "      # 1011's x; MaxVel reset
     assert abs(numbers(m.send("Read.Counter ."))[0]) <= HOLD   # reset: near 0
     x0 = m.plant()["X"]["pos"]

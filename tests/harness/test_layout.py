@@ -9,7 +9,7 @@ from pathlib import Path
 HARNESS = Path(__file__).resolve().parents[2] / "harness"
 
 # the import order, bottom first; a package may import only packages of a lower rank
-RANK = {"blocks": 0, "machine": 1, "analysis": 2, "lab": 2,
+RANK = {"blocks": 0, "machine": 1, "analysis": 2, "lab": 2, "controllers": 2,
         "commands": 3, "bench": 4, "fuzz": 4, "soak": 4, "figures": 4, "cli": 4,
         "__main__": 5}
 
