@@ -1,5 +1,5 @@
 """The link protocol end to end (docs/controllers.md, "The link protocol"): the
-11/23's words of blocks 1100-1106 talking to the four 11/03s of blocks 1080-1089
+11/23's words of blocks 1200-1206 talking to the four 11/03s of blocks 1080-1089
 over the lock-step's link DRV11s (harness/controllers/scripted.py, the lock-step
 side of issue 21: until that side is merged this module is skipped)."""
 import re
@@ -14,7 +14,7 @@ scripted = pytest.importorskip("harness.controllers.scripted",
 
 HOLD = 50          # counts: the printed servo's hunting (docs/controllers.md)
 MAIN_SCRIPT = """\
-1100 LOAD
+1200 LOAD
 Set.Up.Robot
 2000 1000 800 0 Abs.Move
 Move.Complete?

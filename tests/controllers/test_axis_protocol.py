@@ -1,4 +1,4 @@
-"""The link protocol's words on the 11/23 (blocks 1100-1106, docs/controllers.md
+"""The link protocol's words on the 11/23 (blocks 1200-1206, docs/controllers.md
 "The link protocol"): the link registers of each axis, the command words, the
 errors naming the axis; without link devices (the ordinary 11/23) Set.Up.Robot
 says so and loses nothing."""
@@ -19,7 +19,7 @@ def main23(tmp_path_factory):
         if not need.exists():
             pytest.fail(f"build first: {need} (make)")
     with Robot(disk=fresh_disk(tmp_path_factory.mktemp("axis-protocol")), timeout=20) as r:
-        for line in MAIN_BOOT_LINES:          # the lock-step run's boot line: 1100 LOAD
+        for line in MAIN_BOOT_LINES:          # the lock-step run's boot line: 1200 LOAD
             r.send(line)
         yield r
 
