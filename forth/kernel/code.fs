@@ -5,7 +5,6 @@
 
 VARIABLE CODE-OPEN  ( -- a ) \ true while a CODE body is being assembled
 VARIABLE CODE-LFA  ( -- a ) \ header of that word: an error discards it whole
-' ASSEMBLER >BODY CONSTANT ASSEMBLER-BODY  ( -- a )
 : END-CODE  ( -- )  \ ASM-END first: if it fails, the word is still open
   ASSEMBLER ASM-END FORTH  0 CODE-OPEN !  CURRENT @ VOC-CONTEXT ;
 : ?END-CODE  ( -- )  CODE-OPEN @ IF END-CODE THEN ;

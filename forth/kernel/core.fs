@@ -57,10 +57,8 @@ VARIABLE WARNING  ( -- a )
 : CHARS  ( n -- n )  ;  \ CORE
 : ALIGNED  ( a -- a' )  DUP 1 AND + ;  \ CORE
 : COUNT  ( ca -- a u )  DUP 1+ SWAP C@ ;  \ CORE
-: /STRING  ( a u n -- a+n u-n )  ROT OVER + -ROT - ;  \ STRING
 : MOVE  ( src dst u -- )  >R 2DUP U< IF R> CMOVE> ELSE R> CMOVE THEN ;  \ CORE
 : ERASE  ( a u -- )  0 FILL ;  \ CORE EXT
-: UPC  ( c -- C )  DUP [CHAR] a [CHAR] z 1+ WITHIN IF 32 - THEN ;
 : COMPARE  ( a1 u1 a2 u2 -- -1|0|1 )  \ STRING: byte values, then lengths
   ROT 2DUP - >R MIN 0 ?DO
     OVER I + C@ OVER I + C@ - ?DUP IF 0< 2* 1+ NIP NIP UNLOOP R> DROP EXIT THEN

@@ -54,9 +54,9 @@ VARIABLE NUM-CELLS  ( -- a ) \ 1 or 2: the number being converted
 
 \ ---- finding words: word lists and the search order ----------------------------
 \ A word list (wid) is the body of a VOCABULARY or the space WORDLIST allots:
-\ +0 .. +16 (octal) the newest LFA of each of its 8 chains (a name's chain: prims.fs
-\ CHAIN-OFFSET, its first character and length), +20 its VOC-LINK cell, +22
-\ the vocabulary's name field (0 for a WORDLIST). The search order is CONTEXT's
+\ +0 .. +76 (octal) the newest LFA of each of its 32 chains (a name's chain:
+\ prims.fs CHAIN-OFFSET, its first character and length), +100 its VOC-LINK
+\ cell, +102 the vocabulary's name field (0 for a WORDLIST). The search order is CONTEXT's
 \ cells, CONTEXT @ searched first; a wid equal to the one before it is not
 \ searched again (FORTH FORTH at boot: FORTH-79's CONTEXT then FORTH, and a
 \ vocabulary word replaces CONTEXT @).
@@ -243,5 +243,6 @@ VOCABULARY FORTH  ( -- ) \ SEARCH EXT: the kernel's vocabulary
 : VOC-CONTEXT  ( wid -- )  \ the first word list := wid
   DUP CONTEXT !  FORTH-BODY <> #ORDER @ 2 < AND IF FORTH-BODY CONTEXT 2+ !  2 #ORDER ! THEN ;
 VOCABULARY ASSEMBLER  ( -- ) \ TOOLS EXT: CODE's vocabulary
+' ASSEMBLER >BODY CONSTANT ASSEMBLER-BODY  ( -- a )
 : DEFINITIONS  ( -- )  CONTEXT @ CURRENT ! ;  \ SEARCH
 \ CODE END-CODE ;CODE: forth/kernel/code.fs (they need the resident assembler)

@@ -22,7 +22,7 @@ CODE (ENDLOCALS)  ( -- ) ( R: lp x*n -- )  \ the frame's size in bytes follows
 16 CONSTANT MAX-LOCALS  ( -- n )
 VARIABLE #LOCALS-IN-USE  ( -- a ) \ locals of the definition being compiled
 VARIABLE LOCALS-DONE  ( -- a ) \ true once their frame is compiled
-CREATE LOCALS-AREA 360 ALLOT  ( -- a ) \ their names, as headers
+\ their names, as headers: in LOCALS-AREA, LOCALS-SIZE bytes (memory.fs)
 VARIABLE LOCALS-HERE  ( -- a ) \ next free byte of LOCALS-AREA
 : LOCALS-CLEAR  ( -- )  0 #LOCALS-IN-USE !  0 LOCALS-DONE !  LOCALS-AREA LOCALS-HERE ! ;
 : LOCALS-LEAVE,  ( -- )  \ compile the dropping of the frame, if there is one
@@ -36,7 +36,7 @@ LABEL LOCAL-DOES  ( -- ) \ a local's name, run while compiling: compile its fetc
     2OVER 2 PICK COUNT 31 AND NAME= IF NIP DUP THEN  NEXT-LOCAL
   REPEAT DROP NIP NIP ;
 : LOCAL-HEADER  ( a u k -- )  \ the k-th local's name; its offset is set by LOCALS-FRAME,
-  OVER LOCALS-HERE @ + 8 + LOCALS-AREA 360 + U> ABORT" local names too long"
+  OVER LOCALS-HERE @ + 8 + LOCALS-AREA LOCALS-SIZE + U> ABORT" local names too long"
   DP @ >R  LOCALS-HERE @ DP !
   -ROT  DUP 128 OR C,  HERE OVER ALLOT SWAP CMOVE  ALIGN  JSR-W , LOCAL-DOES , ,
   HERE LOCALS-HERE !  R> DP ! ;

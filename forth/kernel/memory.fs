@@ -16,6 +16,8 @@
   154014O EQU TICKS       \   60 Hz ticks the kernel's clock handler counted (double)
   154020O EQU XOFF-HELD   \   nonzero: XOFF sent to the terminal, XON not yet
   154022O EQU RXDROP      \   typed-ahead characters ^C dropped from the ring
+  154024O EQU LOCALS-AREA \ 154024-154377 the names of a definition's locals (locals.fs),
+      236 EQU LOCALS-SIZE \   out of the dictionary, which pays for its 32 hash chains
   154400O EQU RING        \ 154400-155377 console receive ring (511 characters)
      777O EQU RING-MASK
      384  EQU XOFF-MARK   \ characters in the ring that make RXINT send XOFF

@@ -198,15 +198,22 @@ CODE FILL  ( a n c -- )  \ CORE
   T 2 S I) MOV,  W 4 S I) MOV,  ?STORE-RANGE,  R0 S )+ MOV,  T S )+ MOV,  W S )+ MOV,
   T TST,  NE IF,  BEGIN,  W )+ R0 MOVB,  T DEC,  EQ UNTIL,  THEN,  NEXT,  END-CODE
 
-\ parsing helpers: with a blank delimiter any control character is a blank
+\ parsing helpers: with a blank delimiter any control character is a blank;
+\ /STRING and UPC are CODE for the outer interpreter's sake (issue 19: parsing
+\ and numbers cost more than the hashed search)
+CODE /STRING  ( a u n -- a+n u-n )  \ STRING
+  R0 S )+ MOV,  S ) R0 SUB,  2 S I) R0 ADD,  NEXT,  END-CODE
+CODE UPC  ( c -- C )  \ a-z upper-cased, any other value as it is
+  141O # S ) CMP,  HIS IF,  172O # S ) CMP,  LOS IF,  S ) 40O # SUB,  THEN,  THEN,  NEXT,  END-CODE
 CODE SCAN  ( a u c -- a' u' )  \ first c, or the end
   EQ SCAN-LOOP,  END-CODE
 CODE SKIP  ( a u c -- a' u' )  \ first character not c, or the end
   NE SCAN-LOOP,  END-CODE
 
 \ The dictionary search's two halves (CODE words WID-FIND SEARCH-ORDER CHAIN in
-\ interp.fs). A word list has 8 chains; a name's chain is its upper-cased first
-\ character plus twice its length, mod 8 (the metacompiler's theader hashes alike).
+\ interp.fs). A word list has #chains (32) chains; a name's chain is its upper-cased
+\ first character plus twice its length, mod 32 (the metacompiler's theader
+\ hashes alike, and so does the harness's kernel_layout.chain_of).
 \ CHAIN-OFFSET (JSR PC): R0 := the byte offset of that chain in a word list, for
 \ the name at 2(S), length (S) (at least 1)
 LABEL CHAIN-OFFSET

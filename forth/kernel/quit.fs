@@ -3,8 +3,9 @@
 S-LIMIT CONSTANT S-LIMIT  ( -- a )
 2 ARRAY WHAT  ( -- a ) \ the word being interpreted: address, length
 VARIABLE 'ON-ERROR  ( -- a ) \ xt run after every error (0 = none)
-: ?STACK  ( -- )
-  SP@ S0 U> IF -4 THROW THEN  SP@ S-LIMIT 16 + U< IF -3 THROW THEN ;
+CODE ?STACK  ( -- )  \ error -4 below the empty stack, -3 within 8 cells of full
+  S0 # S CMP,  HI IF,  -4 THROW,  THEN,  S-LIMIT 16 + # S CMP,  LO IF,  -3 THROW,  THEN,
+  NEXT,  END-CODE
 \ Control structures typed at the terminal (0 3 DO I . -1 +LOOP): an opening
 \ IF BEGIN DO ?DO in interpret state starts a temporary definition, compiled
 \ 1 KB below the dictionary's end, not at HERE: what it lays down with , or
@@ -179,9 +180,8 @@ CREATE ERROR-TEXTS  ( -- a )
   ERROR-TEXTS BEGIN DUP @ WHILE
     2DUP @ = IF NIP 2+ COUNT TYPE EXIT THEN  2+ COUNT + ALIGNED
   REPEAT DROP  ." error " 0 .R ;
-\ An undefined word that a vocabulary outside the search order holds (after an
-\ error the context is CURRENT again, so the editor's P is gone until EDITOR is
-\ typed): say which vocabulary to type.
+\ An undefined word that a vocabulary outside the search order holds (the
+\ editor's P before EDITOR was typed): say which vocabulary to type.
 : IN-ORDER?  ( wid -- f )  \ is wid in the search order?
   FALSE #ORDER @ 2* CONTEXT + CONTEXT ?DO OVER I @ = OR 2 +LOOP NIP ;
 : .ELSEWHERE  ( -- )
@@ -204,8 +204,10 @@ CREATE ERROR-TEXTS  ( -- a )
   STATE @ IF COLON-LFA @ ?DUP IF UNLINK THEN THEN
   0 COLON-LFA !  NO-LOOPS  TEMP-DEPTH @ IF TEMP-HERE @ UNLINK  0 TEMP-DEPTH ! THEN  TEMP-FORGET ;
 : CLEAR-STACK  ( -- )  S0 SP! ;  \ empty (what is beyond S0 traps: MMU-TRAP)
-: CONTEXT-AFTER-ERROR  ( -- )  \ FORTH-79: CONTEXT := CURRENT; an empty order: the boot one
-  #ORDER @ 0= IF ONLY ALSO THEN  CURRENT @ VOC-CONTEXT ;
+\ FORTH-79 makes CONTEXT CURRENT after an error; here only when the assembler is
+\ the context (a CODE word cut short), so an error while editing keeps EDITOR.
+: CONTEXT-AFTER-ERROR  ( -- )  \ an empty order: the boot one
+  #ORDER @ 0= IF ONLY ALSO THEN  CONTEXT @ ASSEMBLER-BODY = IF CURRENT @ VOC-CONTEXT THEN ;
 : RESET-AFTER-ERROR  ( -- )
   DISCARD-DEFINITION  POSTPONE [  0 BLK !  0 SRC-ID !  CONTEXT-AFTER-ERROR
   'ON-ERROR @ ?DUP IF EXECUTE THEN  0 PRIORITY! ;

@@ -19,7 +19,7 @@ VARIABLE COLUMN  ( -- a )
     I 16 + I ?DO I C@ DUP BL 127 WITHIN 0= IF DROP [CHAR] . THEN EMIT LOOP
   16 +LOOP CR ;
 
-\ ---- SEE: decompile a colon definition ------------------------------------------------
+\ ---- SEE: decompile a colon definition; a CODE word through DISASSEMBLE-CODE ------------
 : .XT  ( xt -- )  DUP >NAME ?DUP IF NIP .NAME ELSE ." [" .OCTAL ." ]" THEN SPACE ;
 : INLINE-STRING?  ( xt -- f )
   DUP ['] (.") = OVER ['] (S") = OR SWAP ['] (ABORT") = OR ;
@@ -43,7 +43,9 @@ VARIABLE COLUMN  ( -- a )
     DUP 'DOVAR = IF DROP ." is CREATE / VARIABLE, body at " >BODY .OCTAL CR EXIT THEN
     DUP 'DOCON = IF DROP ." is CONSTANT " >BODY @ . CR EXIT THEN
     ." has DOES> code at " .OCTAL ." , body at " >BODY .OCTAL CR EXIT THEN
-  ." is CODE at " DUP .OCTAL ." : " 8 0 DO DUP @ .OCTAL SPACE 2+ LOOP DROP CR ;
+  ." is CODE at " DUP .OCTAL  \ in mnemonics once blocks 1090-1097 (a disassembler) are loaded
+  S" DISASSEMBLE-CODE" FORTH-BODY SEARCH-WORDLIST IF EXECUTE EXIT THEN
+  ." : " 8 0 DO DUP @ .OCTAL SPACE 2+ LOOP DROP CR ." (1090 LOAD: SEE then disassembles)" CR ;
 
 \ ---- FORGET and MARKER -----------------------------------------------------------
 : TRIM-CHAIN  ( lfa head -- )  \ unlink chain entries at or above lfa

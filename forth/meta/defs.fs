@@ -42,7 +42,7 @@ get-current  meta-wl set-current
 : VAR ( n "name" -- )  t-create t, ;
 : ARRAY ( n "name" -- )  t-create 2* tallot ;
 : VOCABULARY ( "name" -- )
-  \ target body: +0..+16 (octal) heads of the 8 chains  +20 VOC-LINK chain  +22 its NFA;
+  \ target body: the heads of its #chains chains, its VOC-LINK cell, its NFA;
   \ its code is the DOES> part of the target's VOCABULARY
   close-code  parse-name
   2dup s" FORTH" ci= if tforth else tvoc-new then >r

@@ -47,13 +47,15 @@ create map-tab max-map 2* cells allot  variable #map  variable map-fd
   loop r> base !  map-fd @ close-file throw ;
 
 \ ---- target vocabularies on the host -----------------------------------------
-\ host voc: +0 host wordlist  +1..+8 the heads of its 8 chains (target LFA of
-\ the newest word of each chain: name-chain)  +9 target body address of the
-\ vocabulary word (0 until defined)  +10 next host voc
-8 constant #chains   \ also the kernel's (prims.fs CHAIN-OFFSET, interp.fs): the dictionary space
-\ left at boot (issue 12: 16 KB) pays 16 bytes per word list for 8 instead of 4; 32 measured faster
+\ host voc: +0 host wordlist  +1..+#chains the heads of its chains (target LFA
+\ of the newest word of each chain: name-chain)  then the target body address
+\ of the vocabulary word (0 until defined), the next host voc
+32 constant #chains   \ a power of 2; also the kernel's (prims.fs CHAIN-OFFSET, interp.fs) and,
+\ through build/kernel.map's #CHAINS, the harness's (kernel_layout.CHAINS). Issue 19: 32
+\ chains cut the interpreter to ~1 130 instructions a word (8: 1 721); their 48 bytes a word
+\ list come from the S" ring moved out of the dictionary (memory.fs SBUFS)
 : name-chain ( addr u -- i )  \ as CHAIN-OFFSET: upper-cased first character
-  2* swap c@ upc + #chains 1- and ;   \ plus twice the length, mod 8
+  2* swap c@ upc + #chains 1- and ;   \ plus twice the length, mod #chains
 0 value tvocs
 : tvoc-new ( -- voc )
   wordlist  here swap ,  #chains 0 do 0 , loop  0 , tvocs ,  dup to tvocs ;

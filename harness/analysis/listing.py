@@ -16,7 +16,10 @@ VAR's body: `MOV Desire.Pos(R1),R2`), a constant's value (`MOV R0,@#CntOut`) or
 a kernel address (kernel.map) is printed as that name, and I/O addresses get the
 register's name as a comment. Threaded code is annotated with the names of the
 words it calls (a name defined twice, like the editor's T and the assembler's T,
-by its address); the words of a header (link, count, name) are not annotated.
+by its address); the words of a header (link, count, name) are not annotated, nor
+are a thread's inline cells (a literal, a string, a branch's target: 1024 is
+not DOCOL), except a literal that is the xt of a word the blocks define
+(' Interrupt.Servo).
 
 Blocks beyond the appendix (1020, 1030-1031) are listed too: `1000 LOAD` runs
 first, then each chain of blocks (joined by -->) that the range touches is LOADed
@@ -160,6 +163,49 @@ def _header_name(words_by_addr, start, expected):
     return expected if raw[:count].decode("latin-1").upper() == expected.upper() else ""
 
 
+# words a thread follows with an inline cell (a number, a branch's target, a
+# local's offset), or with a counted string (forth/kernel/tools.fs SEE-COLON knows
+# the same): those cells are data, not calls, so they name nothing
+CELL_OPERAND = ("(LIT)", "BRANCH", "?BRANCH", "(DO)", "(?DO)", "(LOOP)", "(+LOOP)",
+                "(LOCAL@)", "(LOCAL!)", "(ENDLOCALS)")
+BRANCHES = ("BRANCH", "?BRANCH", "(DO)", "(?DO)", "(LOOP)", "(+LOOP)")
+STRING_OPERAND = ('(.")', '(S")', '(ABORT")')
+JSR_IP = 0o004437          # a colon definition's code field: JSR R4,@#DOCOL
+
+
+def thread_operands(words, cfa, sym):
+    """{address: "lit" or ""} for the inline operand cells (literals; branch
+    targets, offsets, strings) of the colon definition whose code field is at
+    `cfa`, following its thread as SEE does: to the EXIT that no branch jumps
+    past; a DOES> part (the JSR R4,@#DODOES after (DOES>)) is followed too."""
+    if words.get(cfa) != JSR_IP or words.get(cfa + 2) != sym.get("DOCOL"):
+        return {}
+    xt = {name: sym.get(name) for name in CELL_OPERAND + STRING_OPERAND + ("EXIT", "(DOES>)")}
+    cells, branch, string = ({xt[n] for n in names} - {None}
+                             for names in (CELL_OPERAND, BRANCHES, STRING_OPERAND))
+    operands, a, far = {}, cfa + BODY, cfa
+    while a in words:
+        w = words[a]
+        if w in cells:
+            operands[a + 2] = "lit" if w == xt["(LIT)"] else ""
+            if w in branch:
+                far = max(far, words.get(a + 2, 0))
+            a += 4
+        elif w in string:
+            length = words.get(a + 2, 0) & 0o377            # count byte, then the text
+            end = (a + 2 + 1 + length + 1) & ~1
+            operands.update(dict.fromkeys(range(a + 2, end, 2), ""))
+            a = end
+        elif w == xt["(DOES>)"] and words.get(a + 2) == JSR_IP:
+            operands.update({a + 2: "", a + 4: ""})           # JSR R4,@#DODOES
+            a += 6
+        elif w == xt["EXIT"] and a >= far:
+            break
+        else:
+            a += 2
+    return operands
+
+
 def symbolic(text, operands, constants):
     """A SIMH disassembly with operand addresses named: X(Rn) by the data word at X,
     @#A by the constant whose value is A or the data word at A; an I/O register's
@@ -211,6 +257,8 @@ class Listing:
     names: dict                    # address -> name (kernel words and new words)
     operands: dict = field(default_factory=dict)    # data address -> name
     constants: dict = field(default_factory=dict)   # a CON's value -> its name
+    inline: dict = field(default_factory=dict)      # a thread's literal, target, string cells:
+                                                    # address -> what to note (a literal's value)
 
     def format(self):
         out = []
@@ -240,8 +288,9 @@ class Listing:
         for i in range(0, len(span.words), 6):
             chunk = span.words[i:i + 6]
             octal = " ".join(f"{w:06o}" for w in chunk)
-            names = [self.names.get(w, "") if first + 2 * (i + k) > span.cfa else ""
-                     for k, w in enumerate(chunk)]   # a header's words name nothing
+            names = [self.inline.get(a, self.names.get(w, "")) if a > span.cfa else ""
+                     for a, w in ((first + 2 * (i + k), w) for k, w in enumerate(chunk))]
+            # a header's words name nothing; a literal says its value
             note = " ".join(n for n in names if n)
             rows.append(f"     {span.start + 2 * i:06o}  {octal:<41} {note}".rstrip())
         return rows
@@ -303,6 +352,13 @@ def make_listing(first=1000, last=1012, image=PRISTINE, kernel=KERNEL, kernel_ma
             names[span.cfa] = operands[span.cfa + BODY] = span.name
             if words.get(span.cfa + 2) == sym.get("DOCON"):
                 constants.setdefault(words.get(span.cfa + BODY), span.name)
+    inline = {}
+    defined = {s.cfa: s.header for ss in spans.values() for s in ss if s.header}
+    for cfa in defined:
+        inline.update(thread_operands(words, cfa, sym))
+    for a, kind in inline.items():      # a literal names a word only as its xt (' Name);
+        if kind == "lit":               # the number itself is in the octal column
+            inline[a] = f"' {defined[words[a]]}" if words.get(a) in defined else ""
     for ss in spans.values():
         for span in ss:
             span.words = [words.get(a, 0) for a in range(span.start & ~1, span.end, 2)]
@@ -314,7 +370,7 @@ def make_listing(first=1000, last=1012, image=PRISTINE, kernel=KERNEL, kernel_ma
     blocks = {n: [block_text(n)[i:i + LINE_CHARS] for i in range(0, BLOCK_BYTES, LINE_CHARS)]
               for n in range(first, last + 1) if n in present}
     spans = {k: v for k, v in spans.items() if first <= k[0] <= last}
-    return Listing(blocks, spans, names, operands, constants)
+    return Listing(blocks, spans, names, operands, constants, inline)
 
 
 def format_ranges(numbers):

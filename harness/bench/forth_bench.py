@@ -69,6 +69,11 @@ BENCHMARKS = [
     ("1000 LOAD (the paper's blocks 1000-1012)", "B-LOAD", 2075402),
 ]
 WORDS_INTERPRETED = 128
+# the dictionary's free bytes (UNUSED) at boot and after 1000 LOAD: the 16 KB floor
+# at boot (issue 12), and the kernel before issue 19's 32 chains (8 chains, 16 420 and
+# 14 392 bytes)
+FREE_FLOOR = 16384
+FREE_BEFORE = (16420, 14392)
 
 TIME = re.compile(r"Time:\s+(\d+)")
 
@@ -113,7 +118,17 @@ def start_counting(m, setup):
     return count(m, "B-EMPTY")
 
 
+def free_bytes():
+    """UNUSED at boot (the banner's figure) and after 1000 LOAD, on a fresh machine."""
+    with tempfile.TemporaryDirectory() as tmp, \
+            Machine(disk=fresh_disk(tmp), timeout=120) as m:
+        boot = int(m.send("UNUSED U.").split()[0])
+        m.send("1000 LOAD")
+        return boot, int(m.send("UNUSED U.").split()[0])
+
+
 def main():
+    free = free_bytes()
     with tempfile.TemporaryDirectory() as tmp, \
             Machine(disk=fresh_disk(tmp), timeout=120) as m:
         empty = start_counting(m, SETUP)
@@ -140,6 +155,8 @@ def main():
     print(f"  (the interpreter: {words[1] // WORDS_INTERPRETED} instructions per word, "
           f"number or name, including the dictionary search; "
           f"{words[2] // WORDS_INTERPRETED} before)")
+    print(f"dictionary free: {free[0]} bytes at boot (floor {FREE_FLOOR}), {free[1]} after "
+          f"1000 LOAD; {FREE_BEFORE[0]} and {FREE_BEFORE[1]} with 8 chains")
     print(f"instructions per NEXT {nxt}, DOCOL {docol}, EXIT {exit_}, "
           f"call of an empty colon word {call}")
     print("anchors: polyFORTH Sieve 75 s on an 11/03, 12.5 s on an 11/60; "
@@ -149,6 +166,10 @@ def main():
         print(cost(key, n))
     if primes != "1899" or fib != "6765":
         print("benchmark results wrong", file=sys.stderr)
+        sys.exit(1)
+    if free[0] < FREE_FLOOR:
+        print(f"the kernel leaves {free[0]} bytes at boot, below the floor of {FREE_FLOOR}",
+              file=sys.stderr)
         sys.exit(1)
 
 

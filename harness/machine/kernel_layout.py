@@ -18,7 +18,8 @@ from harness.machine.build import KERNEL_MAP
 
 BODY = 4                  # code field to data: >BODY
 SMUDGE, LENGTH = 0o40, 0o37
-CHAINS = 8                # a vocabulary's body: the newest LFA of each chain (chain_of)
+CHAINS = 32               # a vocabulary's body: the newest LFA of each chain (chain_of);
+                          # the map's #CHAINS (forth/meta/meta.fs) must agree: read_kernel_map
 _MAP_LINE = re.compile(r"[0-7]+")
 
 
@@ -49,6 +50,9 @@ def read_kernel_map(path=KERNEL_MAP, required=()):
     if missing:
         raise KernelMapError(f"{path} lacks {', '.join(missing)}: a kernel this harness "
                              "does not know how to drive")
+    if symbols.get("#CHAINS", CHAINS) != CHAINS:
+        raise KernelMapError(f"{path}: the kernel hashes names into {symbols['#CHAINS']} chains "
+                             f"per word list, this harness into {CHAINS} (kernel_layout.CHAINS)")
     return symbols
 
 
@@ -68,7 +72,7 @@ def entry(path=KERNEL_MAP):
 
 def chain_of(name):
     """The chain of a word list that a header named `name` is linked into: its
-    upper-cased first character plus twice its length, mod CHAINS (8) (the kernel's
+    upper-cased first character plus twice its length, mod CHAINS (the kernel's
     CHAIN-OFFSET, the metacompiler's name-chain)."""
     first = name.encode("latin-1")[0]
     if ord("a") <= first <= ord("z"):

@@ -93,11 +93,11 @@ def test_bad_editor_input_changes_nothing(image):
         m.send("EDITOR 500 WIPE 0 P keep me")
         r = m.reply("0 P " + "x" * 65)
         assert not r.ok and "longer than 64" in r.error
-        # an error makes FORTH the context again, hence EDITOR before each
-        r = m.reply("EDITOR 16 P out of range")
+        # an error while editing keeps the editor selected (issue 18)
+        r = m.reply("16 P out of range")
         assert not r.ok and "0..15" in r.error
-        assert not m.reply("EDITOR -1 D").ok
-        assert listed_lines(m.send("EDITOR 0 T")) == {0: "keep me"}
+        assert not m.reply("-1 D").ok
+        assert listed_lines(m.send("0 T")) == {0: "keep me"}
         m.send("0 P " + "y" * 64)                # exactly 64 is fine
         assert listed_lines(m.send("0 T")) == {0: "y" * 64}
 
@@ -120,11 +120,21 @@ def test_change_text_inside_a_line(image):
         assert listed_lines(m.send("L"))[1] == ""
 
 
-def test_after_an_error_the_editor_word_says_how_to_select_it_again(image):
+def test_an_editor_word_outside_the_order_says_how_to_select_it(image):
     with Machine(disk=image) as m:
         m.send("EDITOR 200 WIPE 0 P first")
-        assert m.reply("NOSUCH").error == "undefined word: NOSUCH"   # context is FORTH now
+        assert m.reply("NOSUCH").error == "undefined word: NOSUCH"   # the editor stays
+        m.send("1 P second")
+        m.send("FORTH")                          # the user leaves it
         r = m.reply("1 P second")
         assert r.error == "undefined word: P (a word of EDITOR: type EDITOR to select it again)"
         m.send("EDITOR 1 P second")
         assert m.send("1 T").rstrip() == "\r\n 1 second"
+
+
+def test_an_error_inside_a_code_word_leaves_the_assembler(image):
+    """FORTH-79's CONTEXT := CURRENT after an error is kept where it matters: a
+    CODE word cut short does not leave ASSEMBLER as the context."""
+    with Machine(disk=image) as m:
+        assert not m.reply("CODE HALF R0 R1 MOV, NOSUCH").ok
+        assert m.send("CONTEXT @ ' FORTH >BODY = .").strip() == "-1"

@@ -353,3 +353,18 @@ def test_locals(forth):
     assert "undefined word: z" in forth.reply("z").error
     assert forth.send(": L7 {: z :} z 1+ ; 1 L7 .") == "2 "
     assert forth.send('S" #LOCALS" ENVIRONMENT? . .') == "-1 16 "
+
+
+def test_locals_names_room(forth):
+    """The locals' names live in LOCALS-AREA, 236 bytes outside the dictionary
+    (forth/kernel/memory.fs; issue 19 gave their old dictionary bytes to the hash
+    chains): 16 locals of short names fit, more than the room is a clear error
+    and the dictionary stays as it was."""
+    names = " ".join(f"a{k}" for k in range(1, 17))
+    forth.send(f": L8 {{: {names} :}} a1 a16 - a8 + ;")
+    assert forth.send(" ".join(str(k) for k in range(1, 17)) + " L8 .") == "-7 "
+    long = " ".join(f"{chr(97 + k)}{'x' * 30}" for k in range(7))  # 7 x 38 bytes
+    here = forth.send("HERE U.")
+    assert "local names too long" in forth.reply(f": L9 {{: {long} :}} ;").error
+    assert forth.send("HERE U.") == here and forth.reply("L9").error == "undefined word: L9"
+    assert forth.send("1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 L8 .") == "-7 "

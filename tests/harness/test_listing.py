@@ -5,7 +5,7 @@ import sys
 
 import pytest
 
-from harness.analysis.listing import make_listing
+from harness.analysis.listing import make_listing, thread_operands
 from harness.blocks.blockfile import BLOCK_BYTES, text_to_block
 from harness.machine.build import fresh_disk
 from tests.conftest import ROOT
@@ -127,3 +127,30 @@ def test_cli_lists_a_block_of_the_users_own_disk(tmp_path):
     r = subprocess.run([sys.executable, "-m", "harness", "listing", "--blocks", "1100"],
                        cwd=ROOT, capture_output=True, text=True)      # not on the pristine disk
     assert r.returncode == 2 and "argument --blocks" in r.stderr
+
+
+def test_thread_operands_name_nothing():
+    """Issue 18: a thread's inline cells are data: a literal that happens to equal
+    a kernel address (1024 = DOCOL), a string's bytes, a branch's target."""
+    sym = {"DOCOL": 0o2000, "(LIT)": 0o2122, '(ABORT")': 0o12232, "?BRANCH": 0o2202,
+           "EXIT": 0o2060, "(DOES>)": 0o24524}
+    cfa = 0o50000
+    thread = [0o4437, 0o2000,                    # JSR R4,@#DOCOL
+              0o2122, 0o2000,                    # (LIT) 1024
+              0o2202, 0o50024,                   # ?BRANCH past the EXIT below
+              0o12232, 3 | ord("+") << 8, ord("F") | ord("I") << 8,   # (ABORT") "+FI"
+              0o2060,                            # EXIT: a branch goes past it
+              0o2060,                            # EXIT: the end
+              0o2122]                            # beyond: not this word's
+    words = {cfa + 2 * i: w for i, w in enumerate(thread)}
+    inline = thread_operands(words, cfa, sym)
+    assert inline == {cfa + 6: "lit", cfa + 10: "", cfa + 14: "", cfa + 16: ""}
+    assert thread_operands({cfa: 0o4237, cfa + 2: 0o2026}, cfa, sym) == {}   # a CREATE word
+
+
+def test_asn_listing_names_no_data(tmp_path):
+    text = make_listing(1070, 1078).format()
+    assert "(LIT) DOCOL" not in text                # 1024 BLANK in Save.Net
+    assert "(LIT) ' Interrupt.Servo" in text        # ' Interrupt.Servo: an xt, named so
+    assert "header of .Net\n" in text
+    assert not re.search(r'\(ABORT"\) \S', text) and not re.search(r'\(\."\) \S', text)

@@ -65,7 +65,7 @@ def test_servo_watch_dumps_the_dictionary_when_it_changes_and_watches_by_name():
     d.header("State")
     direction = d.header("Dir", body_words=1)
     watch = ServoWatch(symbols())
-    assert watch.probe() == ["dump 20470 8", "dump 6462 1", "dump 6344 1"]
+    assert watch.probe() == [f"dump 20470 {CHAINS}", "dump 6462 1", "dump 6344 1"]
     assert watch.on_memory(VOCABULARY, d.heads) == []
     assert watch.on_memory(0o6462, [fence]) == []
     command = watch.on_memory(0o6344, [d.here])

@@ -63,5 +63,5 @@ def test_listing_lists_the_blocks():
     assert done.returncode == 0, done.stderr
     for block in range(1070, 1079):
         assert f"Block {block}" in done.stdout
-    for word in ("Choose", "Learn", "Act.Move", "Trial", "Trials"):
+    for word in ("Choose", "Learn", "Act.Move", "Trial", "Trials", ".Net"):
         assert f"header of {word}\n" in done.stdout
