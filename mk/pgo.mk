@@ -13,7 +13,13 @@
 # (a Sieve, `make bench-devices`) the guided build is 1.13 (-O2) to 1.21 (-O3,
 # LTO) times as fast, short of the 1.3 that would pay for compiling the
 # simulator twice more and a training run in every first build (about 15 s of
-# CPU on this machine). `make bench-devices` builds and times it.
+# CPU on this machine). Re-measured for issue 19 (a 200-pass Sieve by python -m
+# harness run, CPU seconds, guided and plain in alternation): -O2 1.08, -O3 with
+# LTO 1.11, the same without PIE 1.16, and with -fno-plt -fno-semantic-interposition
+# -fipa-pta 1.10. Nearly 90 % of the plain build's time (perf) is SIMH's CPU core:
+# sim_instr, and relocR, ReadW, ReadE, GeteaW (the 11/23's memory management
+# relocating every access); guidance only inlines and lays out that code.
+# `make bench-devices` builds and times it.
 PGO ?= 0
 # both passes at -O3: the profile is read after the early inliner, whose choices
 # the optimisation level changes (gripper.c's counters did not match at -O2/-O3)

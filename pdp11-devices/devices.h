@@ -48,6 +48,8 @@ void plant_dev_init (void);
 void plant_dev_rate_changing (int32 old_rate);    /* integrate up to now, old time */
 void plant_dev_rate_changed (int32 old_rate);     /* pending samples keep their times */
 void plant_dev_command_done (void);               /* after each SCP command */
+void rack_hint_enable (int on);                   /* SET PLANT HINT (rack_hint.c) */
+void rack_hint_dac (int axis, int code);          /* at each DAC write */
 
 /* Text files written by a device (text_attach.c): `what` starts the error message. */
 t_stat device_attach_text (UNIT *uptr, char *cptr, const char *what);
@@ -69,6 +71,15 @@ void rl_one_writer_install (void);
 
 /* QUIT, EXIT and BYE at sim> FLUSH the FORTH's blocks first (leave_check.c). */
 void leave_check_install (void);
+
+/* Interrupts taken per vector (interrupt_count.c); a breakpoint on an I/O
+   register (io_break.c: SET LAB IOBREAK). */
+void interrupt_count_install (void);
+uint32 interrupt_count (int32 vector);
+void interrupt_count_write (FILE *f, const char *before);
+t_stat io_break_set (char *cptr);
+t_stat io_break_clear (void);
+void io_break_show (FILE *st);
 
 /* The lab bench's device (lab.c): its part of a rate change. */
 void lab_rate_changed (int32 old_rate);

@@ -9,6 +9,7 @@ kernel's map: PC names the code running, IP the colon definition whose thread
 runs, (IP) the word it calls next.
 """
 import bisect
+from collections import deque
 
 from harness.lab.dictionary import headers
 from harness.machine.kernel_layout import LENGTH, SMUDGE, code_field
@@ -47,6 +48,17 @@ class WordIndex:
         """The code field of the newest word called `name` (case ignored), or None."""
         found = [a for a, n in self.by_address.items() if n.upper() == name.upper()]
         return max(found) if found else None
+
+    def neighbours(self, name, count=3):
+        """The names defined just before the newest `name` (nearest first) and just
+        after it, `count` each: ([...], [...])."""
+        address = self.address_of(name)
+        if address is None:
+            return [], []
+        i = self._sorted.index(address)
+        before = self._sorted[max(0, i - count):i][::-1]
+        return ([self.by_address[a] for a in before],
+                [self.by_address[a] for a in self._sorted[i + 1:i + 1 + count]])
 
     def name_at(self, address):
         return self.by_address.get(address)
@@ -87,3 +99,43 @@ def panel(fields, index):
         ] + [{"device": "AAV11-A", "register": f"DAC {axis}", "address": f"{0o170440 + 2 * i:o}",
               "value": f"{code:04o}"} for i, (axis, code) in enumerate(zip(AXES, dacs))],
     }
+
+
+# The vectors the robot's machine uses (forth/README.md, pdp11-devices/): named on the
+# panel, shown even while none is taken. Others appear once the CPU takes them.
+VECTORS = {0o60: "DL11 in", 0o64: "DL11 out", 0o100: "KW11-L", 0o160: "RL11",
+           0o300: "DRV11 A", 0o304: "DRV11 B"}
+RATE_WINDOW_S = 1.0                  # interrupts per second over the last simulated second
+
+
+def interrupt_counts(fields):
+    """An I row's fields (time, then vector=count, octal vector): (time, {vector: count}),
+    or None when unreadable."""
+    try:
+        counts = {int(v, 8): int(n) for v, n in (f.split("=") for f in fields[1:] if f)}
+        return float(fields[0]), counts
+    except (ValueError, IndexError):
+        return None
+
+
+class InterruptRates:
+    """Interrupts per simulated second per vector, from the device's running counts
+    (pdp11-devices/simh/interrupt_count.c): the counts' growth since the newest
+    sample at least RATE_WINDOW_S simulated seconds old (or the oldest kept)."""
+
+    def __init__(self):
+        self.samples = deque()
+
+    def add(self, time, counts):
+        """The panel's list: [{vector, device, per_s, total}], known vectors first."""
+        if self.samples and time < self.samples[-1][0]:
+            self.samples.clear()             # a new machine (or a reset): start again
+        self.samples.append((time, counts))
+        while len(self.samples) > 2 and self.samples[1][0] <= time - RATE_WINDOW_S:
+            self.samples.popleft()
+        then, before = self.samples[0]
+        span = time - then
+        vectors = list(VECTORS) + sorted(set(counts) - set(VECTORS))
+        return [{"vector": f"{v:03o}", "device": VECTORS.get(v, "?"), "total": counts.get(v, 0),
+                 "per_s": round((counts.get(v, 0) - before.get(v, 0)) / span, 1) if span > 0
+                 else None} for v in vectors]

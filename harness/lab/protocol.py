@@ -39,7 +39,9 @@ FROM_PAGE = {
     "pause": {},
     "run": {},
     "step": {},
+    "stepi": {},                                 # one instruction, at sim> (breakpoints.py)
     "break": {"word": Rule(str, 31)},            # a breakpoint on a FORTH word (breakpoints.py)
+    "iobreak": {"address": Rule(str, 8)},        # ... on an I/O register's access (octal)
     "nobreak": {},
     "program": {"block": int},                   # a block and its listing (program_pane.py)
     "check": {"exercise": (1, 2, 3, 4, 5)},      # run docs/exercises.md's check (lesson_checks.py)
@@ -52,7 +54,8 @@ TO_PAGE = {
     "data": {"rows": list, "status": dict, "servo": dict,
              "panel": Rule(dict, nullable=True),          # the 11/23's front panel
              "ticks": list},                              # [time_s, words] where they changed
-    "history": {"rows": list},                           # the instructions before a breakpoint
+    "history": {"rows": list, "what": str,               # the instructions before a breakpoint
+                "where": Rule(dict, nullable=True)},     # the stopped word's block and line
     "keyboard": {"holder": Rule(str, nullable=True), "you": bool},
     "input": {"waiting": int, "room": int},              # answer to `key`: the queue
     "error": {"why": str},
@@ -124,6 +127,7 @@ DEVICE_COMMANDS = {
     "dump": "ADDR N",         # N words from octal ADDR
     "power": "on|off",        # the amplifier rack's switch (SET PLANT POWER)
     "panel": "[ADDR...|off]", # R rows: the 11/23's front panel (front_panel.py)
+    "halt": "",               # to sim> at the next tick, paused or not
 }
 
 # Rows the device writes, one a line: kind -> its fields (a trailing "..." repeats).
@@ -134,6 +138,7 @@ DEVICE_ROWS = {
     "S": ("time_s", "state", "speed", "power"),    # after every command
     "M": ("addr", "w0", "..."),                    # a dump, up to 64 words a row
     "R": ("time_s", "r0", "..."),                  # the front panel (front_panel.py)
+    "I": ("time_s", "vector=count", "..."),        # interrupts taken, with each R row
     "E": ("what",),                                # a refused command
 }
 

@@ -20,8 +20,9 @@ from aiohttp import WSMsgType, web
 
 from harness.lab import breakpoints, guard, lesson_checks, protocol, shell_terminal
 from harness.lab.feed import plant_row, thin, words_of
-from harness.lab.front_panel import PANEL_WORDS, WordIndex, panel
-from harness.lab.program_pane import ProgramPane
+from harness.lab.front_panel import PANEL_WORDS, InterruptRates, WordIndex, \
+    interrupt_counts, panel
+from harness.lab.program_pane import LatestQuestion, ProgramPane
 from harness.lab.rack_hint import RackHint
 from harness.lab.servo_watch import PER_AXIS, SINGLE, ServoWatch
 from harness.lab.word_history import WordHistory
@@ -60,12 +61,14 @@ class Lab:
         self.watch = ServoWatch(symbols)
         self.rack_hint = RackHint()
         self.program = ProgramPane(disk, lister)   # the program pane's blocks and listings
+        self.listings = LatestQuestion()           # one listing at a time, the latest asked
         self.disk = disk
         self.checking = set()                # exercises whose check runs now
         self.words = WordIndex({address: name for name, address in symbols.items()})
         self.panel_command = "panel " + " ".join(f"{symbols[name] + BODY:o}"
                                                  for name in PANEL_WORDS)
         self.panel = None                # the 11/23's front panel (front_panel.py)
+        self.interrupts = InterruptRates()   # per vector, per simulated second
         self._console_tail = b""
         self.pages = {}                  # websocket -> its name ("page 3")
         self.opened = 0
@@ -85,28 +88,57 @@ class Lab:
         if self.shell_echo:
             self.shell_echo(data)
         self.to_pages(data)
-        self._console_tail = (self._console_tail + data)[-64:]
-        if breakpoints.HIT.search(self._console_tail):       # a breakpoint was hit
+        self._console_tail = (self._console_tail + data)[-200:]
+        hit = breakpoints.HIT.search(self._console_tail)      # a breakpoint was hit
+        io_hit = breakpoints.IO_HIT.search(self._console_tail)
+        if hit or io_hit:
             self._console_tail = b""
-            asyncio.ensure_future(self.show_history())
+            self.sim.prompted.clear()         # SIMH's prompt follows: the history waits for it
+            pc = int((hit or io_hit).group(1 if hit else 2), 8)
+            what = io_hit.group(1).decode() if io_hit else f"Breakpoint at PC {pc:06o}"
+            asyncio.ensure_future(self.show_history(what, self.words.containing(pc), pc))
 
-    async def show_history(self):
-        """The instructions before a breakpoint, each with its word, to the pages."""
-        text = await self._at_sim([f"show cpu history={breakpoints.SHOWN}"])
-        self.broadcast({"t": "history", "rows": breakpoints.named_history(text, self.words)})
+    async def show_history(self, what, word, pc):
+        """The instructions before a breakpoint, each with its word, to the pages; and
+        where that word was defined, for the program pane (which also marks the PC's
+        row of the listing)."""
+        text = await self._at_sim([f"show cpu history={breakpoints.SHOWN}"], stop=False)
+        where = await asyncio.to_thread(self.program.where_defined, word,
+                                        *self.words.neighbours(word)) if word else None
+        if where:
+            where["pc"] = f"{pc:06o}"
+        self.broadcast({"t": "history", "rows": breakpoints.named_history(text, self.words),
+                        "what": f"{what}, in {word}" if word else what, "where": where})
 
     async def set_break(self, word):
         lines, said = breakpoints.break_lines(self.words, word)
-        self.on_console(f"\r\n[lab] {said}\r\n".encode())
+        self.note(said)
         if lines:
             await self._at_sim(lines)
 
-    async def _at_sim(self, lines):
+    async def set_iobreak(self, address):
+        """SET LAB IOBREAK (io_break.c) at sim>; SIMH's refusal (no device answers
+        there) is shown and nothing is set; the machine goes on either way."""
+        lines, said = breakpoints.iobreak_lines(address)
+        self.note(said)
+        if not lines:
+            return
+        refused = breakpoints.IO_REFUSED.search(await self._at_sim(lines))
+        if refused:
+            self.note(f"not set: {refused.group(0)}")
+        await self._at_sim(["cont"])
+
+    async def step_instruction(self):
+        """One instruction at sim> (stopping there first, at a tick), then the front
+        panel as it stands (SHOW LAB PANEL writes an R row)."""
+        await self._at_sim(breakpoints.STEP_LINES)
+
+    async def _at_sim(self, lines, stop=True):
         try:
-            return await self.sim.simh_lines(lines)
-        except asyncio.TimeoutError:                  # paused by the page: SIMH waits
-            self.on_console(b"\r\n[lab] SIMH did not come to its prompt (paused? Run "
-                            b"first)\r\n")
+            return await self.sim.simh_lines(lines, stop=stop)
+        except asyncio.TimeoutError:                  # SIMH busy (a long STEP, a LOAD of
+            self.on_console(b"\r\n[lab] SIMH did not come to its prompt within 10 s"
+                            b"\r\n")                   # its own): nothing more is typed
             return ""
 
     def to_pages(self, data):
@@ -135,6 +167,10 @@ class Lab:
             self.words.learn(self.watch.memory, self.watch.vocabulary)   # a fresh dictionary
         elif row.kind == "R":
             self.panel = panel(row.fields, self.words)
+        elif row.kind == "I":
+            counts = interrupt_counts(row.fields)
+            if self.panel and counts:
+                self.panel["interrupts"] = self.interrupts.add(*counts)
         elif row.kind == "S":
             self.status["time"] = float(row.fields[0])
             self.status["state"] = row.fields[1]
@@ -272,7 +308,12 @@ class Lab:
         self.sim.command("pause")
 
     def on_run(self, ws, message):
+        at_sim = self.sim.watcher.at_simh    # stopped at sim> (a step, a breakpoint): go on
+        if at_sim:
+            self.must_hold(ws)
         self.sim.command("run")
+        if at_sim:
+            asyncio.ensure_future(self._at_sim(["cont"]))
 
     def on_step(self, ws, message):
         self.sim.command("step")
@@ -281,13 +322,23 @@ class Lab:
         self.must_hold(ws)
         asyncio.ensure_future(self.set_break(message["word"]))
 
+    def on_iobreak(self, ws, message):   # ... on an I/O register's access (io_break.c)
+        self.must_hold(ws)
+        asyncio.ensure_future(self.set_iobreak(message["address"]))
+
+    def on_stepi(self, ws, message):     # one instruction (front panel)
+        self.must_hold(ws)
+        asyncio.ensure_future(self.step_instruction())
+
     def on_nobreak(self, ws, message):
         self.must_hold(ws)
         asyncio.ensure_future(self._at_sim(breakpoints.clear_lines()))
 
     def on_program(self, ws, message):   # read only: the page's editor types at the FORTH
         async def answer():
-            self.tell(ws, await asyncio.to_thread(self.program.message, message["block"]))
+            told = await self.listings.answer(ws, message["block"], self.program.message)
+            if told:
+                self.tell(ws, told)
         asyncio.ensure_future(answer())
 
     def on_check(self, ws, message):     # the lessons: an exercise's own check, on the host
@@ -305,7 +356,7 @@ class Lab:
         asyncio.ensure_future(answer())
 
     def must_hold(self, ws):
-        """Breakpoints are typed at sim>: only by the keyboard's holder."""
+        """Breakpoints and steps are typed at sim>: only by the keyboard's holder."""
         if not self.may_type(ws):
             raise protocol.Refused(f"{self.holder_name()} holds the keyboard: "
                                    "take it to set breakpoints here")
@@ -365,6 +416,7 @@ def make_app(lab, token, port_of):
                     lab.tell(ws, {"t": "error", "why": "binary messages are not the lab's"})
         finally:
             lab.pages.pop(ws, None)
+            lab.listings.forget(ws)
             lab.release(ws)
         return ws
 

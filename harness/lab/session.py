@@ -222,22 +222,26 @@ class Simulator:
         self.keys_waiting.set()
         return notes
 
-    async def simh_lines(self, lines, wait_s=10):
-        """Type `lines` at sim> as the page would (through the guard), after a ^E
-        when the machine runs; a line that runs the machine (CONT) ends the list.
-        What SIMH printed for the last line answered at its prompt."""
+    async def simh_lines(self, lines, wait_s=10, stop=True):
+        """Type `lines` at sim> as the page would (through the guard), after
+        stopping the machine when it runs (the LAB device's `halt`: at a tick, and
+        answered while paused, when a ^E would wait for Run), or, with stop False,
+        after SIMH's prompt comes by itself (a breakpoint was reported); a line
+        that runs the machine (CONT) ends the list, but for STEP, which comes back
+        to sim>. What SIMH printed for the last line answered at its prompt."""
         if self.leaving or self.child is None:
             return ""
         if not self.watcher.at_simh:
-            self.prompted.clear()
-            self.page_keys(b"\x05")
+            if stop:
+                self.prompted.clear()
+                self.command("halt")
             await asyncio.wait_for(self.prompted.wait(), wait_s)
         answer = ""
         for line in lines:
             self.prompted.clear()
             self.capture = bytearray()
             self.page_keys(line.encode() + b"\r")
-            if simh_command(line) in RUNS:
+            if simh_command(line) in RUNS - {"STEP"}:
                 break
             await asyncio.wait_for(self.prompted.wait(), wait_s)
             answer = self.capture.decode("latin-1")

@@ -48,9 +48,9 @@ SETTABLE = {   # device: (its modifiers in table order, those the page may set)
     "CPU": (CPU_MODIFIERS, {"HISTORY"}),
     "PLANT": (("X", "Y", "Z", "T", "KV", "TAU", "AMAX", "VMAX", "OFFSET", "PMIN", "PMAX",
                "WALK", "POS", "GRIPPER", "OBJECT", "PULLOUT", "OPENING", "PARTX", "PARTY",
-               "PARTZ", "SEED", "SAMPLE", "POWER"), None),     # None: all
+               "PARTZ", "SEED", "SAMPLE", "POWER", "HINT"), None),     # None: all
     "CLK": (("RATE", "REALTIME", "NOREALTIME", "TIMED", "NOTIMED"), None),
-    "LAB": (("SPEED",), None),
+    "LAB": (("SPEED", "IOBREAK", "NOIOBREAK"), None),
 }
 # Devices whose units SIMH backs with host files (disks, tapes, paper tape, cards,
 # printer) or sockets (DZ, VH, XQ): a DEPOSIT into one writes that file. The others

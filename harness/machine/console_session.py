@@ -43,6 +43,8 @@ IDLE = "set cpu idle"
 # stand still (z's brake on) however long the blocks take to load or the user
 # waits; it is switched on once Set.Up.Robot's servo holds them (README).
 RACK_OFF = "set plant power=off"
+# ... and says so at the console when a move waits on it (pdp11-devices/plant/rack_hint.c)
+RACK_HINT_ON = "set plant hint=on"
 CTRL_C, CTRL_E, CTRL_U = b"\x03", b"\x05", b"\x15"
 BUSY_WAIT = 3                      # wall seconds a running word gets before ^C stops it
 FLUSH_WAIT = 60                    # wall seconds the FORTH gets to answer FLUSH
@@ -60,7 +62,7 @@ def boot_script(disk, trace=None, fast=False, kernel=KERNEL, timed=False, read_o
     trace_line = f"attach plant {Path(trace).resolve()}\n" if trace else ""
     return simh.boot_script(disk, kernel, setup=f"{IDLE if fast else REALTIME}\n"
                             + ("set clk timed\n" if timed else "")
-                            + f"{RACK_OFF}\n{trace_line}", read_only=read_only)
+                            + f"{RACK_OFF}\n{RACK_HINT_ON}\n{trace_line}", read_only=read_only)
 
 
 def simh_exit_report(status, disk):

@@ -29,6 +29,9 @@
                                the DRV11's CSR and OUTBUF, the AAV11-A's four
                                DACs (read through their SIMH register tables),
                                then the words at the panel's addresses
+     I,time_s,v=n,...          with each R row: for each vector the CPU has
+                               taken an interrupt at (octal), how many times
+                               since power-up (interrupt_count.c)
      E,what                    a command refused, and why
    Commands, one per line (harness/lab/protocol.py's DEVICE_COMMANDS is the
    server's copy of this list and of the rows above; tests/lab/test_lab_device.py
@@ -44,6 +47,11 @@
                  two ticks like every command
      panel [a...]  R rows from now on, with the words at octal addresses a...
                  (at most 8; the lab gives BLK and >IN); `panel off` stops them
+     halt        stop the machine at sim> at the next tick (a paused run at
+                 once): "Simulation stopped", as ^E, but at a tick, and
+                 answered while paused, when ^E waits; CONT goes on (still
+                 paused if it was). Instructions STEPped there pass the next
+                 tick without pausing (the front panel's step never hangs)
    A bad command is answered by an E row and changes nothing.
 
    Reporting: up to ten times the 11/23's pace every tick is reported. Faster
@@ -61,7 +69,11 @@
    (^E too) wait in the terminal until the run goes on. When the command FIFO
    loses its writer (the lab server exited) a pause ends by itself.
 
-   SET LAB SPEED=X as the command; SHOW LAB: state, speed, watched words. */
+   SET LAB SPEED=X as the command; SHOW LAB: state, speed, watched words.
+   SHOW LAB PANEL: the registers and the PSW at the console, and an R and an
+   I row to the lab (the front panel after a STEP at sim>). SHOW LAB
+   INTERRUPTS: the interrupts taken per vector. SET LAB IOBREAK=addr, SET LAB
+   NOIOBREAK, SHOW LAB IOBREAK: a breakpoint on an I/O register (io_break.c). */
 #include "devices.h"
 
 #include <errno.h>
@@ -89,7 +101,9 @@ t_value get_rval (REG *rptr, uint32 idx);    /* scp.c, not in scp.h */
 #define PANEL_MAX    8
 
 static double speed;                    /* 0 = full speed */
-static int paused, steps;
+static int paused, steps, halting;
+static int halted;                      /* at sim> by `halt`: STEP there passes the next tick */
+extern int32 sim_step;                  /* scp.c: instructions a STEP has left, 0 otherwise */
 static int32 sample_acc;
 static int sub;                         /* sample within the tick, 0 at the tick */
 static int reporting;                   /* this tick's rows are written */
@@ -112,11 +126,19 @@ static t_stat lab_attach (UNIT *uptr, char *cptr);
 static t_stat lab_detach (UNIT *uptr);
 static t_stat lab_set_speed (UNIT *uptr, int32 val, char *cptr, void *desc);
 static t_stat lab_show (FILE *st, UNIT *uptr, int32 val, void *desc);
+static t_stat lab_show_panel (FILE *st, UNIT *uptr, int32 val, void *desc);
+static t_stat lab_show_interrupts (FILE *st, UNIT *uptr, int32 val, void *desc);
+static t_stat lab_set_iobreak (UNIT *uptr, int32 val, char *cptr, void *desc);
+static t_stat lab_show_iobreak (FILE *st, UNIT *uptr, int32 val, void *desc);
 
 static UNIT lab_unit = { UDATA (&lab_svc, UNIT_ATTABLE, 0) };
 
 static MTAB lab_mod[] = {
     { MTAB_XTD|MTAB_VDV, 0, "STATE", "SPEED", &lab_set_speed, &lab_show, NULL },
+    { MTAB_XTD|MTAB_VDV|MTAB_NMO, 0, "PANEL", NULL, NULL, &lab_show_panel, NULL },
+    { MTAB_XTD|MTAB_VDV|MTAB_NMO, 0, "INTERRUPTS", NULL, NULL, &lab_show_interrupts, NULL },
+    { MTAB_XTD|MTAB_VDV|MTAB_NMO, 1, "IOBREAK", "IOBREAK", &lab_set_iobreak, &lab_show_iobreak, NULL },
+    { MTAB_XTD|MTAB_VDV, 0, NULL, "NOIOBREAK", &lab_set_iobreak, NULL, NULL },
     { 0 }
 };
 
@@ -231,6 +253,8 @@ static void write_panel (void)
         fprintf (out (), ",%o", (int) device_reg (&aav_dev, "DAC", i));
     for (int i = 0; i < panel_n; i++)
         fprintf (out (), ",%o", M[panel_at[i] >> 1]);
+    fprintf (out (), "\nI,%.6f", clock_time ());
+    interrupt_count_write (out (), ",");
     fputc ('\n', out ());
 }
 
@@ -274,9 +298,11 @@ static void command (char *line)
         why = "power takes on or off";
     else if (strcmp (line, "panel") == 0)
         why = set_panel (args);
+    else if (strcmp (line, "halt") == 0)
+        halting = 1;
     else if (*line)
         why = "commands: speed X, pause, run, step, watch ADDR..., dump ADDR N, power on|off, "
-              "panel [ADDR...|off]";
+              "panel [ADDR...|off], halt";
     if (why && out ())
         fprintf (out (), "E,%s\n", why);
     say_state ();
@@ -351,13 +377,13 @@ static void pace (void)
     wall_pacer_pace (&pacer, speed, LATE_S);
 }
 
-static void wait_while_paused (void)
+static void wait_while_paused (int stepping)
 {
     struct pollfd p = { ctl_fd, POLLIN, 0 };
-    if (!paused || steps > 0) return;
+    if (!paused || steps > 0 || halting || stepping) return;
     say_state ();
     flush_all ();
-    while (paused && steps == 0) {
+    while (paused && steps == 0 && !halting) {
         if (poll (&p, 1, 200) > 0 && !read_commands ())
             paused = 0;                         /* the server is gone: run on */
         flush_all ();
@@ -402,12 +428,20 @@ static t_stat lab_svc (UNIT *uptr)
     if (reporting)
         write_plant ();
     if (sub == 0) {
-        wait_while_paused ();
+        int stepping = halted && sim_step;      /* instructions stepped at sim> after `halt` */
+        halted = 0;
+        wait_while_paused (stepping);
         if (reporting)
             flush_all ();
         pace ();
     }
     schedule (uptr);
+    if (sub == 0 && halting) {                   /* `halt`: to sim>, between two ticks */
+        halting = 0;
+        halted = 1;
+        flush_all ();
+        return SCPE_STOP;
+    }
     return SCPE_OK;
 }
 
@@ -455,7 +489,7 @@ static t_stat lab_detach (UNIT *uptr)
     device_detach_text (uptr);
     if (ctl_fd >= 0) close (ctl_fd);
     ctl_fd = -1;
-    paused = steps = panel = 0;
+    paused = steps = panel = halting = 0;
     return SCPE_OK;
 }
 
@@ -478,5 +512,38 @@ static t_stat lab_show (FILE *st, UNIT *uptr, int32 val, void *desc)
              speed > 0 ? "x" : " (full)", watch_n);
     for (int i = 0; i < watch_n; i++)
         fprintf (st, "%s%06o=%06o", i ? " " : ": ", watch[i], M[watch[i] >> 1]);
+    return SCPE_OK;
+}
+
+static t_stat lab_show_panel (FILE *st, UNIT *uptr, int32 val, void *desc)
+{
+    fprintf (st, "PC=%06o PSW=%06o", (int) (R[7] & 0177777), (int) (get_PSW () & 0177777));
+    for (int i = 0; i < 7; i++)
+        fprintf (st, " R%d=%06o", i, (int) (R[i] & 0177777));
+    fputc ('\n', st);
+    if (out ()) {
+        write_panel ();
+        flush_all ();
+    }
+    return SCPE_OK;
+}
+
+static t_stat lab_show_interrupts (FILE *st, UNIT *uptr, int32 val, void *desc)
+{
+    fprintf (st, "interrupts taken (vector=count):");
+    interrupt_count_write (st, " ");
+    fputc ('\n', st);
+    return SCPE_OK;
+}
+
+static t_stat lab_set_iobreak (UNIT *uptr, int32 val, char *cptr, void *desc)
+{
+    return val ? io_break_set (cptr) : io_break_clear ();
+}
+
+static t_stat lab_show_iobreak (FILE *st, UNIT *uptr, int32 val, void *desc)
+{
+    io_break_show (st);
+    fputc ('\n', st);
     return SCPE_OK;
 }

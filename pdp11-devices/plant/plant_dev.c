@@ -14,7 +14,9 @@
      SET PLANT SAMPLE=n (trace samples per simulated second, 0..1000,
      default 60; 0 = rows at DAC writes only), SET PLANT POWER=ON|OFF (the
      amplifier rack's power switch, plant.h; on at power-up of the simulator;
-     the interactive console switches it off at boot);
+     the interactive console switches it off at boot), SET PLANT HINT=ON|OFF
+     (a line at the console when a move waits on the rack switched off:
+     rack_hint.c; off at power-up, the interactive console switches it on);
      the gripper (the project's continuation, docs/continuation.md):
      SET PLANT GRIPPER OBJECT=1.0   (an object that wide between the fingers,
      inches; 0 = none; refused while the fingers are closer than that),
@@ -99,6 +101,7 @@ static MTAB plant_mod[] = {
     { MTAB_XTD|MTAB_VDV, 0, NULL, "SEED", &plant_set_seed, NULL, NULL },
     { MTAB_XTD|MTAB_VDV, 0, NULL, "SAMPLE", &plant_set_sample, NULL, NULL },
     { MTAB_XTD|MTAB_VDV, 0, NULL, "POWER", &plant_set_power_switch, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV, 1, NULL, "HINT", &plant_set_power_switch, NULL, NULL },
     { MTAB_XTD|MTAB_VDV, 0, "SETTINGS", NULL, NULL, &plant_show_global, NULL },
     { MTAB_XTD|MTAB_VUN, 0, "AXES", NULL, NULL, &plant_show_axes, NULL },
     { MTAB_XTD|MTAB_VDV|MTAB_NMO, 0, "LAYOUT", NULL, NULL, &plant_show_layout, NULL },
@@ -165,6 +168,7 @@ void plant_dev_dac (int axis, int code)
     plant_set_code (&robot_plant, axis, code);
     if (plant_unit.flags & UNIT_ATT)
         trace_row (axis);
+    rack_hint_dac (axis, code);
 }
 
 void plant_dev_run_lines (int lines)
@@ -366,10 +370,14 @@ static t_stat plant_set_power_switch (UNIT *uptr, int32 val, char *cptr, void *d
     else if (cptr != NULL && strcmp (cptr, "OFF") == 0)
         on = 0;
     else {
-        printf ("PLANT: POWER is ON or OFF (the amplifier rack's switch)\n");
+        printf (val ? "PLANT: HINT is ON or OFF (a line when a move waits on the rack switched off)\n"
+                    : "PLANT: POWER is ON or OFF (the amplifier rack's switch)\n");
         return SCPE_ARG;
     }
-    plant_dev_power (on);
+    if (val)                                    /* SET PLANT HINT (rack_hint.c) */
+        rack_hint_enable (on);
+    else
+        plant_dev_power (on);
     return SCPE_OK;
 }
 

@@ -33,6 +33,8 @@
    (rl_one_writer.c, which also installs sim_vm_read to tell the startup
    script from commands typed at sim>), installs sim_vm_cmd so that QUIT, EXIT
    and BYE FLUSH the FORTH's blocks first (leave_check.c), and
+   wraps every DIB's interrupt acknowledge to count the interrupts taken per
+   vector (interrupt_count.c), and
    installs sim_vm_post, which scp.c calls after every command (used to end a
    SET PLANT axis selection). */
 #include "devices.h"
@@ -86,6 +88,7 @@ static void machine_vm_init (void)
     rl_durable_install ();
     rl_one_writer_install ();
     leave_check_install ();
+    interrupt_count_install ();
     sim_vm_post = &machine_vm_post;
 }
 

@@ -137,3 +137,27 @@ def test_sample_0_traces_dac_writes_only(tmp_path):
     assert [(r["axis"], r["dac"]) for r in rows] == [("X", 2148), ("Y", 2048), ("Z", 2048),
                                                      ("T", 1948)]
     assert all(r["t"] < 1e-4 for r in rows)
+
+
+def test_a_move_waiting_on_the_rack_switched_off_is_told_once(tmp_path):
+    """SET PLANT HINT=ON (make run's console: rack_hint.c): with the rack off, a move
+    the servo commands for 2 simulated seconds gets one line at the console; the
+    machine's run is the same, hint or not (the plant trace byte for byte); with
+    the hint off (scripted runs) or the rack on, no line."""
+    from harness.machine.build import KERNEL, fresh_disk
+    from harness.machine.console_session import boot_script
+
+    def run(name, settings):
+        trace = tmp_path / f"{name}.csv"
+        out = simh.run(f"attach rl0 {fresh_disk(tmp_path, name + '.dsk')}\n{settings}"
+                       f"attach plant {trace}\nload {KERNEL}\nstep 6000000\ndetach plant\n",
+                       keyboard="1000 LOAD\rSet.Up.Robot\r800 800 400 0 Abs.Move\r", timeout=120)
+        return out, trace.read_bytes()
+    told, told_trace = run("told", "set plant power=off\nset plant hint=on\n")
+    quiet, quiet_trace = run("quiet", "set plant power=off\n")
+    on, _ = run("on", "set plant hint=on\n")
+    line = "[plant] The amplifier rack is OFF: the servo has commanded axis X to move for 2 s"
+    assert told.count(line) == 1 and "Move.Complete? waits for ever" in told
+    assert line not in quiet and line not in on
+    assert told_trace == quiet_trace
+    assert "set plant hint=on" in boot_script(tmp_path / "d.dsk")       # make run's console

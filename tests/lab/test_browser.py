@@ -194,6 +194,9 @@ def test_the_page_fits_both_projectors_without_scrolling(page, width, height):
         assert js(page, "window.lab.panel.registers.length") == 8
         box = js(page, "document.getElementById('front-panel').getBoundingClientRect().toJSON()")
         assert box["bottom"] <= height, "the front panel is cut off"
+        row, servo = (js(page, f"document.getElementById('{e}').getBoundingClientRect().bottom")
+                      for e in ("break-row", "servo-panel"))
+        assert row <= servo, "the breakpoint row is below the servo panel's fold"
         low, high = js(page, "[window.lab.scope.plot.scales.counts.min, window.lab.scope.plot.scales.counts.max]")
         shown = [v for v in js(page, "window.lab.scope.plot.data[1]") if v is not None]
         assert low <= min(shown) and max(shown) <= high     # the scope's counts all in sight
@@ -221,7 +224,8 @@ def test_a_breakpoint_on_a_word_stops_the_machine_and_shows_the_history(page):
     page.execute_script("return new Promise(r => setTimeout(r, 500))")   # CONT's input flush
     page.find_element(By.CSS_SELECTOR, "#terminal textarea").send_keys("5 .\n")
     shown = wait_for("the history", lambda: page.find_element(By.ID, "history").is_displayed())
-    assert shown and page.find_element(By.ID, "state").text == "STOPPED sim>"
+    wait_for("the badge (drawn at the page's next frame)",
+             lambda: page.find_element(By.ID, "state").text == "STOPPED sim>")
     text = page.find_element(By.ID, "history-text").text
     assert "in word" in text and len(text.splitlines()) > 5
     assert all(row[3] for row in js(page, "window.lab.history"))
@@ -231,6 +235,44 @@ def test_a_breakpoint_on_a_word_stops_the_machine_and_shows_the_history(page):
     click(page, "#nobreak")                          # cleared: the line's answer comes
     wait_for("5  ok", lambda: js(page, "window.lab.screen()").count("5  ok") > before)
     page.find_element(By.CSS_SELECTOR, "#terminal textarea").click()
+
+
+@full_session
+def test_an_io_breakpoint_shows_the_history_and_the_line_and_steps_one_instruction(page):
+    """The servo's write of DAC X (SET LAB IOBREAK=170440, io_break.c) stops the
+    machine: the history before it, and the program pane on block 1008's line 1, where
+    Interrupt.Servo is defined; Step 1 instruction moves the PC; Clear goes on."""
+    if js(page, "window.lab.status.state") == "pause":
+        click(page, "#pause")                                  # Run
+    page.find_element(By.ID, "iobreak-address").send_keys("170440")
+    click(page, '#iobreak-form button[type="submit"]')
+    wait_for("the history", lambda: page.find_element(By.ID, "history").is_displayed())
+    what = page.find_element(By.ID, "history-what").text
+    assert "I/O break: write" in what and "170440 (AAV11-A DAC X)" in what, what
+    wait_for("the badge", lambda: page.find_element(By.ID, "state").text == "STOPPED sim>")
+    wait_for("block 1008's line 1 marked", lambda: js(page, "window.lab.program.block") == 1008
+             and page.find_elements(By.CSS_SELECTOR, '#program-text .pl.current[data-line="1"]'))
+    assert "stopped in Interrupt.Servo: defined in block 1008, line 1" in \
+        page.find_element(By.ID, "program-where").text
+    marked = page.find_elements(By.CSS_SELECTOR, "#program-text .pl-code.pc")   # its PC's row
+    assert len(marked) == 1 and "170440" in marked[0].text, [m.text for m in marked]
+    for width, height in ((1280, 720), (1920, 1080)):
+        with projector(page, width, height):
+            assert_on_screen(page, width, height, ("console-panel", "program-panel",
+                                                   "servo-panel", "scope-panel"))
+            page.save_screenshot(str(ARTIFACTS / f"lab-iobreak-{width}.png"))
+    click(page, "#history-close")
+    pcs = [js(page, "window.lab.panel.registers[7].value")]
+    for _ in range(3):
+        click(page, "#stepi")
+        pcs.append(wait_for("the next PC", lambda: (lambda pc: pc not in pcs and pc)(
+            js(page, "window.lab.panel.registers[7].value"))))
+    assert "Step expired" in js(page, "window.lab.screen()")
+    page.save_screenshot(str(ARTIFACTS / "lab-stepped.png"))
+    click(page, "#nobreak")
+    wait_for("the run again", lambda: page.find_element(By.ID, "state").text.startswith("RUN"))
+    assert js(page, "window.lab.stoppedIn") is None or not js(page, "window.lab.status.prompt")
+    click(page, '#views button[data-view="robot-panel"]')
 
 
 @full_session

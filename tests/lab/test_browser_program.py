@@ -163,14 +163,25 @@ def test_the_teaching_views_fit_both_projectors_in_both_themes(page, theme, widt
     largest text; the panes scroll inside themselves. axe-core: nothing serious."""
     if js(page, "window.lab.theme") != theme:
         click(page, "#theme")
+    sizes = ("[term.options.fontSize, parseFloat(getComputedStyle(document.querySelector("
+             "'#servo th')).fontSize), parseFloat(getComputedStyle(document.getElementById("
+             "'front-panel')).fontSize), window.lab.scope.plot.axes[1].font[0]]")
+    while not js(page, "document.getElementById('font-down').disabled"):
+        click(page, "#font-down")
+    smallest = js(page, sizes)
     for _ in js(page, "window.lab.fontScales"):
         if not js(page, "document.getElementById('font-up').disabled"):
             click(page, "#font-up")
     assert js(page, "window.lab.fontStep") == len(js(page, "window.lab.fontScales")) - 1
+    largest = js(page, sizes)                # the terminal, the servo table, the front
+    assert all(float(str(b).split("px")[0]) > float(str(a).split("px")[0])   # panel, the
+               for a, b in zip(smallest, largest)), (smallest, largest)     # scope's axes
     with projector(page, width, height):
         for view in ("teach-panel", "program-panel"):
             click(page, f'#views button[data-view="{view}"]')
-            assert_on_screen(page, width, height, (view,), buttons="header button, #views button")
+            assert_on_screen(page, width, height, (view, "console-panel", "servo-panel",
+                                                   "scope-panel"),
+                             buttons="header button, #views button")
             page.save_screenshot(str(ARTIFACTS / f"lab-{view.split('-')[0]}-{theme}-{width}.png"))
             violations = serious_violations(page)
             assert not violations, violations

@@ -109,3 +109,49 @@ def test_a_breakpoint_on_a_forth_word_stops_with_its_history(lab_server):
     assert len(history) > 5 and all(len(row[0]) == 6 and row[2] for row in history)
     names = [row[3] for row in history]
     assert all(names) and len(set(names)) > 1       # each PC named: the interpreter's words
+
+
+def test_an_io_breakpoint_and_instruction_steps_from_the_page(lab_server):
+    """A bad I/O address is refused before anything is typed, one where no device
+    answers by SIMH (nothing set); SET LAB IOBREAK=170440 stops the servo at its
+    write of DAC X with the history and the line defining the word it stopped in
+    (block 1008's Interrupt.Servo); Step 1 instruction executes one and the panel
+    shows the new PC; the interrupts per second come with the panel (60 at vector
+    100); Clear goes on."""
+    async def steps(page):
+        start = len(page.screen)
+        await page.type("Set.Up.Robot\r")                    # after 1000 LOAD (above)
+        await page.until(r"Set.Up.Robot  ok", start)
+        await page.ws.send_str(json.dumps({"t": "iobreak", "address": "170441"}))
+        await page.until(r"170441 is not an even I/O page address", start)
+        await page.ws.send_str(json.dumps({"t": "iobreak", "address": "170460"}))
+        await page.until(r"not set: IOBREAK: no device answers at 170460[\s\S]*cont", start)
+        ticking = await until_message(page, lambda m: m["t"] == "data" and m["panel"] and any(
+            v["vector"] == "100" and v["per_s"] == 60.0 for v in m["panel"].get("interrupts", [])))
+        await asyncio.sleep(1.5)                             # the lab reads the dictionary
+        await page.ws.send_str(json.dumps({"t": "iobreak", "address": "170440"}))
+        history = await until_message(page, lambda m: m["t"] == "history")
+        pcs = []
+        for _ in range(2):
+            await page.ws.send_str(json.dumps({"t": "stepi"}))
+            stepped = await until_message(page, lambda m: m["t"] == "data" and m["panel"] and
+                                          m["panel"]["registers"][7]["value"] not in pcs)
+            pcs.append(stepped["panel"]["registers"][7]["value"])
+        await page.ws.send_str(json.dumps({"t": "nobreak"}))
+        await page.until(r"set lab noiobreak[\s\S]*cont", start)
+        mark = len(page.screen)
+        await page.type("2 3 + .\r")
+        await page.until(r"5  ok", mark)
+        return page.screen[start:], ticking["panel"]["interrupts"], history, pcs
+    said, interrupts, history, pcs = session(lab_server, steps)
+    assert said.count("170441") == 1                         # refused here: nothing typed
+    rates = {v["vector"]: v for v in interrupts}
+    assert rates["100"]["device"] == "KW11-L" and rates["100"]["per_s"] == 60.0
+    assert rates["060"]["total"] > 0
+    assert re.search(r"I/O break: write [0-7]{6} to 170440 \(AAV11-A DAC X\)", history["what"])
+    assert history["what"].endswith("in Interrupt.Servo")
+    last = history["rows"][-1]                           # the instruction that wrote DAC X
+    assert "170440" in last[2] and last[3] == "Interrupt.Servo"
+    assert history["where"] == {"word": "Interrupt.Servo", "block": 1008, "line": 1,
+                                "pc": last[0]}
+    assert len(pcs) == 2 and said.count("Step expired") == 2

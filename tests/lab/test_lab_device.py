@@ -1,6 +1,7 @@
 """The LAB device (pdp11-devices/lab/lab.c) in build/pdp11: its rows, its commands,
 and that pacing, pausing and stepping leave the machine's run unchanged."""
 import os
+import re
 import threading
 import time
 
@@ -180,3 +181,95 @@ def test_the_server_writes_only_the_devices_commands():
         assert device_command(f"{name} {args}".rstrip())
     with pytest.raises(Refused, match="no command 'fly'"):
         device_command("fly 3")
+
+
+# ---- the front panel's interrupts, I/O breakpoint and one-instruction steps ----------
+def test_interrupts_are_counted_per_vector_in_simulated_time(tmp_path, ctl):
+    """interrupt_count.c: the KW11-L's vector 100 taken 60 times a simulated second once
+    the servo runs, the console's receiver (60) once per typed character; the I rows
+    (with the R rows) carry the same running counts."""
+    out = tmp_path / "lab"
+    ctl("speed 10\npanel\n")                # up to x10 every tick is reported
+    disk = fresh_disk(tmp_path, "i.dsk")
+    text = simh.run(f"attach rl0 {disk}\nattach lab {out}\nload {KERNEL}\nstep {RUN_INSTRUCTIONS}\n"
+                    "show lab interrupts\nstep 300000\nshow lab interrupts\ndetach lab\n",
+                    keyboard=TYPED, timeout=120)
+    counts = [dict(pair.split("=") for pair in line.split(": ", 1)[1].split())
+              for line in text.splitlines() if line.startswith("interrupts taken")]
+    assert int(counts[1]["100"]) - int(counts[0]["100"]) == 60      # one simulated second
+    assert counts[0]["60"] == str(len(TYPED))                       # a receiver interrupt a key
+    ticks = [(float(i[0]), dict(f.split("=") for f in i[1:])) for i in rows(out, "I")]
+    (then, before), (now, after) = ticks[-61], ticks[-1]
+    assert round(now - then, 6) == 1.0 and int(after["100"]) - int(before["100"]) == 60
+    assert int(counts[0]["100"]) <= int(after["100"]) <= int(counts[1]["100"])
+
+
+def test_an_io_breakpoint_refuses_bad_addresses_and_keeps_the_one_set():
+    out = simh.run("set lab iobreak=170440\nset lab iobreak=170441\nset lab iobreak=170460\n"
+                   "set lab iobreak=12\nset lab iobreak=DAC\nshow lab iobreak\n"
+                   "set lab iobreak=17777546\nshow lab iobreak\nset lab noiobreak\nshow lab iobreak\n")
+    assert "IOBREAK: 170441 is not an even I/O page address (160000-177776)" in out
+    assert "IOBREAK: no device answers at 170460" in out
+    assert "IOBREAK: 12 is not an even I/O page address" in out
+    assert "IOBREAK: give an octal I/O page address, as SET LAB IOBREAK=170440" in out
+    shown = [line for line in out.splitlines() if "I/O break" in line]
+    assert shown == ["I/O break at 170440 (AAV11-A DAC X), read or write",
+                     "I/O break at 177546 (KW11-L LKS), read or write", "no I/O break"]
+
+
+def test_an_io_breakpoint_stops_after_the_access_and_changes_nothing(tmp_path):
+    """SET LAB IOBREAK=170440: the servo's first write to DAC X stops the machine with
+    the register, the access, the value and the PC; going on, the run is the plain one
+    (an EXAMINE of the register at sim> does not stop it)."""
+    plain, plain_out = run_servo(tmp_path, "plain")
+    disk = fresh_disk(tmp_path, "broken.dsk")
+    trace = tmp_path / "broken.csv"
+    out = simh.run(f"attach rl0 {disk}\nattach plant {trace}\nload {KERNEL}\n"
+                   "set lab iobreak=170440\nset cpu history=64\n"
+                   f"step {RUN_INSTRUCTIONS}\nshow cpu history=1\nexamine 170440\n"
+                   "set lab noiobreak\nshow time\n", keyboard=TYPED, timeout=120)
+    hit = re.search(r"I/O break: write ([0-7]{6}) to 170440 \(AAV11-A DAC X\) at PC ([0-7]{6})",
+                    out)
+    assert hit, out
+    assert out.count("I/O break:") == 1 and "Simulation stopped" in out
+    assert re.search(rf"\n{hit.group(2)} [0-7]{{6}}\|.*170440", out)   # the history's last
+    executed = int(re.search(r"Time:\s*(\d+)", out).group(1))
+    rest = simh.run(f"attach rl0 {fresh_disk(tmp_path, 'again.dsk')}\nattach plant {trace}\n"
+                    f"load {KERNEL}\nset lab iobreak=170440\nstep {RUN_INSTRUCTIONS}\n"
+                    f"set lab noiobreak\nstep {RUN_INSTRUCTIONS - executed}\ndetach plant\n",
+                    keyboard=TYPED, timeout=120)
+    assert "I/O break: write" in rest                  # (its line may cut the move's echo)
+    assert trace.read_bytes() == plain                 # stopped, gone on: the same run
+    assert "Abs.Move  ok" in rest and "800 800 400 0 Abs.Move  ok" in plain_out
+
+
+def test_halting_and_stepping_instructions_while_paused_change_nothing(tmp_path, ctl):
+    """The front panel's one-instruction step: paused, `halt` brings sim> at once; four
+    STEPs there, SHOW LAB PANEL writing the registers after each, and a STEP across
+    the next tick (it does not wait for the pause); then the run goes on, paused at
+    the tick after, until `run`: the plant trace is the plain run's."""
+    plain, _ = run_servo(tmp_path, "plain")
+    lab = tmp_path / "lab"
+    trace = tmp_path / "stepped.csv"
+
+    def pauses():
+        return {s[0] for s in rows(lab, "S") if s[1] == "pause"}
+
+    def user():                            # halt once paused; run once paused again
+        for n, command in ((1, "halt"), (2, "run")):
+            deadline = time.monotonic() + 60
+            while len(pauses()) < n and time.monotonic() < deadline:
+                time.sleep(0.02)
+            ctl(command + "\n")
+    ctl("speed 100\npanel\npause\n")
+    threading.Thread(target=user, daemon=True).start()
+    out = simh.run(f"attach rl0 {fresh_disk(tmp_path, 'stepped.dsk')}\nattach plant {trace}\n"
+                   f"attach lab {lab}\nload {KERNEL}\nstep {RUN_INSTRUCTIONS}\n"
+                   + "step\nshow lab panel\n" * 4 + "step 6000\nshow lab panel\n"
+                   f"step {RUN_INSTRUCTIONS}\ndetach plant\n", keyboard=TYPED, timeout=120)
+    assert out.count("Simulation stopped") == 1 and out.count("Step expired") == 6, out
+    panels = [line for line in out.splitlines() if line.startswith("PC=")]
+    assert len(panels) == 5 and len(set(panels)) == 5          # the registers moved each step
+    assert len(pauses()) == 2 and rows(lab, "S")[-1][1] == "run"
+    stepped = trace.read_bytes()
+    assert len(stepped) > len(plain) and stepped[:len(plain)] == plain

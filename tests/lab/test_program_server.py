@@ -65,9 +65,17 @@ def test_an_exercise_check_runs_its_commands_and_a_second_click_is_refused(lab_s
 def test_block_lines_and_the_cache_follow_the_disk(tmp_path):
     image = tmp_path / "robot.dsk"
     image.write_bytes(PRISTINE_DISK.read_bytes())
-    pane = ProgramPane(image, block_listing)
+    listed = []
+
+    def counted(image, block):
+        listed.append(block)
+        return block_listing(image, block)
+    pane = ProgramPane(image, counted)
     assert pane.message(200)["why"] == "block 200 is blank"
     assert any("Velocity" in row for row in pane.message(1006)["code"][7])   # listing.py's
+    assert "Interrupt.Servo" in pane.message(1008)["lines"][1]
+    assert any("RTI" in row for rows in pane.message(1008)["code"] for row in rows)
+    assert listed == [1006]                  # one listing run for the appendix's blocks
     data = bytearray(image.read_bytes())
     data[200 * 1024:200 * 1024 + 10] = b"( changed "
     image.write_bytes(bytes(data))

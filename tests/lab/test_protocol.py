@@ -52,7 +52,7 @@ def test_the_pages_messages_are_the_protocols():
     assert len(sent) >= 6
     kinds = set()
     for body in sent:
-        kind = re.match(r'"(\w+)"|lab\.status\.state === "pause" \? "run" : "pause"', body)
+        kind = re.match(r'"(\w+)"|lab\.status\.[\w =|".]+ \? "run" : "pause"', body)
         names = {"run", "pause"} if kind.group(1) is None else {kind.group(1)}
         fields = set(re.findall(r",\s*(\w+)(?::|\s*$)", body))
         for name in names:

@@ -35,7 +35,8 @@ def test_ctrl_c_drops_what_a_paste_still_has_waiting_and_says_how_much(tmp_path)
     child.expect(r"\[console\] \^C: (\d+) characters typed or pasted and not yet read by "
                  r"the machine were dropped", timeout=5)
     assert int(child.match.group(1)) > 20000
-    child.expect(r"Error: interrupted by \^C\r\n", timeout=5)
+    # the FORTH names the word it was reading if the ^C lands inside a line
+    child.expect(r"Error: interrupted by \^C(?:: [^\r\n]+)?\r\n", timeout=5)
     child.expect(r"(\d+) typed-ahead characters dropped by \^C", timeout=5)
     child.send("2 3 + .\r")
     child.expect(r"5  ok\r\n", timeout=10)                # at once: nothing pasted is left
@@ -46,7 +47,7 @@ def test_ctrl_c_drops_what_a_paste_still_has_waiting_and_says_how_much(tmp_path)
 
 
 def test_ctrl_e_during_a_paste_stops_at_sim_and_cont_finishes_it_whole(tmp_path):
-    child, n = paste_at_real_pace(tmp_path, 2500)
+    child, n = paste_at_real_pace(tmp_path, 1200)      # ^E finds 900 or more still waiting
     child.send("\x05")
     child.expect("sim> ", timeout=5)
     child.send("show clk\r")

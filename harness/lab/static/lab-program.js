@@ -54,26 +54,44 @@ function drawProgram() {
   markLine();
 }
 
-// Where the machine is: the front panel's BLK and >IN (front_panel.py), while a
-// block loads; highlighted when the machine is stopped (paused or at sim>).
+// Where the machine is: at a breakpoint, the line that defines the word it stopped
+// in (the server's `history` message: harness/lab/word_source.py); else the front
+// panel's BLK and >IN (front_panel.py), while a block loads. Highlighted while the
+// machine is stopped (paused or at sim>).
 function markLine() {
-  const where = lab.panel && lab.panel.loading, s = lab.status;
-  const stopped = s.state === "pause" || s.prompt;
+  const s = lab.status, stopped = s.state === "pause" || s.prompt;
+  const broke = s.prompt && lab.stoppedIn, where = broke ? lab.stoppedIn : lab.panel && lab.panel.loading;
   const at = where && where.block === program.block && stopped ? where.line : null;
-  if (at === program.shownAt) return;
+  const title = at === null ? "" : broke ? `stopped in ${where.word}: defined in block ${where.block}, line ${where.line}`
+    : `stopped in block ${where.block}, line ${where.line}`;
+  if (at === program.shownAt && title === program.title) return;
   program.shownAt = at;
+  program.title = title;
   document.querySelectorAll("#program-text .pl").forEach((row) => {
     const here = Number(row.dataset.line) === at;
     row.classList.toggle("current", here);
     if (here) row.scrollIntoView({ block: "nearest" });
   });
-  document.getElementById("program-where").textContent = at === null ? "" :
-    `stopped in block ${where.block}, line ${where.line}`;
+  const pc = broke && at !== null ? where.pc : null;      // the instruction it stopped at
+  document.querySelectorAll("#program-text .pl-code").forEach((row) => {
+    const here = pc !== null && row.textContent.trim().startsWith(pc + " ");
+    row.classList.toggle("pc", here);
+    if (here) row.scrollIntoView({ block: "nearest" });
+  });
+  document.getElementById("program-where").textContent = title;
+}
+
+function showWhere(where) {        // a breakpoint hit (lab-panel.js): its word's block, shown
+  if (program.editing !== null) return;
+  showView("program-panel");        // lab-teach.js
+  askBlock(where.block);
 }
 
 function followMachine() {
   const where = lab.panel && lab.panel.loading;
-  if (program.follow && where && where.block !== program.block && program.editing === null
+  if (program.sawPrompt && !lab.status.prompt) lab.stoppedIn = null;   // running again: past it
+  program.sawPrompt = !!lab.status.prompt;
+  if (program.follow && !lab.stoppedIn && where && where.block !== program.block && program.editing === null
       && where.block !== program.asked) {
     program.asked = where.block;
     askBlock(where.block);

@@ -210,10 +210,11 @@ function rebuildPlot() {
       points: { show: false },
     };
   });
+  const fs = Math.min(lab.fontScale || 1, innerWidth <= 1500 ? 1.2 : 1.45);   // --ps (lab-teach.css)
   const axisStyle = { stroke: "#8b949e", grid: { stroke: "#263040", width: 1 }, ticks: { stroke: "#30363d" },
-    font: '12px "DejaVu Sans", sans-serif' };
+    font: `${Math.round(12 * fs)}px "DejaVu Sans", sans-serif` };
   const axes = [{ ...axisStyle, values: (u, v) => v.map((t) => `${t.toFixed(2)} s`) }].concat(
-    scales.map((scale, k) => ({ ...axisStyle, scale, show: k < 2, stroke: colors[k], side: k ? 1 : 3, size: 56,
+    scales.map((scale, k) => ({ ...axisStyle, scale, show: k < 2, stroke: colors[k], side: k ? 1 : 3, size: Math.round(56 * fs),
       grid: { ...axisStyle.grid, show: k === 0 } })));
   const r = plotBox.getBoundingClientRect();
   scope.plot = new uPlot({
@@ -385,5 +386,6 @@ byId("scope-overlay").addEventListener("change", async (e) => {
   if (!file) return;
   try { scope.loadOverlay(await file.text(), file.name); } catch (err) { lab.errors.push(err.message); byId("scope-note").textContent = err.message; }
 });
-window.addEventListener("resize", () => { lab.dirty = true; });
+window.addEventListener("resize", () => { lab.dirty = true; scope.restyle(); });   // the text cap (--ps)
 scope.start = fillChannels;          // lab.js, after the hello
+scope.restyle = () => { if (scope.plot) rebuildPlot(); };   // lab-teach.js: a new text size

@@ -1,5 +1,5 @@
 // Teaching mode: which view the robot's place shows (robot, program, lessons),
-// the light theme, the text size of the program and lessons panes, and the
+// the light theme, the text size (every panel's text but the robot's drawing), and the
 // lessons: README's first session and docs/exercises.md's five exercises as
 // steps, each with the line to type (a button types it at the FORTH through the
 // keyboard) and each exercise's check run by the server (`check`, harness/lab/
@@ -39,7 +39,10 @@ document.getElementById("theme").addEventListener("click", () =>
 const FONT_SCALES = [0.85, 1, 1.2, 1.45, 1.75];              // the largest is tested to fit
 function setFont(step) {
   lab.fontStep = Math.max(0, Math.min(FONT_SCALES.length - 1, step));
-  document.documentElement.style.setProperty("--fs", FONT_SCALES[lab.fontStep]);
+  lab.fontScale = FONT_SCALES[lab.fontStep];
+  document.documentElement.style.setProperty("--fs", lab.fontScale);
+  fitTerminal();                    // lab.js: the terminal's font
+  scope.restyle();                  // lab-scope.js: the plot's axes
   document.getElementById("font-down").disabled = lab.fontStep === 0;
   document.getElementById("font-up").disabled = lab.fontStep === FONT_SCALES.length - 1;
   localStorage.setItem("labFont", lab.fontStep);

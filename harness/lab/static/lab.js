@@ -37,12 +37,14 @@ const term = new Terminal({
 const fit = new FitAddon.FitAddon();
 term.loadAddon(fit);
 term.open(document.getElementById("terminal"));
-function fitTerminal() {           // the largest font that shows the FORTH's 80 columns
-  for (let size = 19; size >= 12; size--) {
+function fitTerminal() {           // the largest font that shows the FORTH's 80 columns,
+  let size = 19;                    // times the text size (A- A+: lab-teach.js); larger
+  for (; size >= 12; size--) {      // than that, the FORTH's longer lines wrap
     term.options.fontSize = size;
     const dims = fit.proposeDimensions();
     if (dims && dims.cols >= 80) break;
   }
+  term.options.fontSize = Math.round(Math.max(size, 12) * (lab.fontScale || 1));
   fit.fit();
 }
 fitTerminal();
@@ -106,7 +108,7 @@ socket.onmessage = (event) => {
   const m = JSON.parse(event.data);
   if (m.t === "con") term.write(m.d);
   else if (m.t === "data") { takeData(m); showInput(); }
-  else if (m.t === "history") showHistory(m.rows);   // lab-panel.js
+  else if (m.t === "history") showHistory(m);        // lab-panel.js
   else if (m.t === "program") showProgram(m);        // lab-program.js
   else if (m.t === "checked") showChecked(m);        // lab-teach.js
   else if (m.t === "hello") {
@@ -181,8 +183,8 @@ function setBadge(kind, text) {
 }
 document.querySelectorAll("#speeds button").forEach((b) =>
   b.addEventListener("click", () => send({ t: "speed", v: b.dataset.speed })));
-document.getElementById("pause").addEventListener("click", () =>
-  send({ t: lab.status.state === "pause" ? "run" : "pause" }));
+document.getElementById("pause").addEventListener("click", () =>   // at sim> (a step, a
+  send({ t: lab.status.state === "pause" || lab.status.prompt ? "run" : "pause" }));   // breakpoint): Run
 document.getElementById("step").addEventListener("click", () => send({ t: "step" }));
 document.getElementById("power").addEventListener("click", () =>
   send({ t: "power", v: lab.status.power === "on" ? "off" : "on" }));
@@ -197,7 +199,7 @@ function drawStatus() {
     else if (s.state === "pause") setBadge("pause", "PAUSED");
     else setBadge("run", `RUN ${speedText}`);
   }
-  document.getElementById("pause").textContent = s.state === "pause" ? "Run" : "Pause";
+  document.getElementById("pause").textContent = s.state === "pause" || s.prompt ? "Run" : "Pause";
   const power = document.getElementById("power");
   power.textContent = s.power === "on" ? "Turn amps off" : "Turn amps on";  // what a click does
   power.title = `the amplifier rack is ${s.power.toUpperCase()}: click to switch it ` +
