@@ -33,12 +33,13 @@ LABEL ENTRY
   177560O @# 100O # MOV,
   \ memory management on, in kernel mode, every page mapped to itself (18-bit
   \ mode): it costs no instruction; its one job is page 6's length, which ends
-  \ at S0, so a word that takes more than the data stack holds traps (MMU-TRAP)
-  R0 KIPDR # MOV,  T KIPAR # MOV,  W CLR,
+  \ at S0, so a word that takes more than the data stack holds traps (MMU-TRAP);
+  \ the 11/03 has none and branches over it (forth/meta/target.fs)
+  MMU{  R0 KIPDR # MOV,  T KIPAR # MOV,  W CLR,
   BEGIN,  R0 )+ 77406O # MOV,  T )+ W MOV,  W 200O # ADD,  T KIPAR 16 + # CMP,  EQ UNTIL,
   KIPDR 12 + @# S0 140000O - 100O / 1- 10O LSHIFT 6 + # MOV,   \ page 6 ends at S0
   KIPAR 14 + @# 7600O # MOV,   \ page 7: the I/O page
-  MMR0 @# 1 # MOV,
+  MMR0 @# 1 # MOV,  }MMU
   \ free dictionary space holds a reserved instruction (000040): a wild jump past
   \ HERE traps and is reported instead of running into HALT (zero) and stopping;
   \ run as a thread it is the xt 40, and address 40 holds another (build.fs)

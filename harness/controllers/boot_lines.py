@@ -7,7 +7,7 @@ MAIN_BOOT_LINES       -> the lines that give the 11/23 its words for the links
 """
 
 AXIS_LINES = ("1080 LOAD", "{axis} Axis.Run")
-MAIN_BOOT_LINES = ("1090 LOAD",)
+MAIN_BOOT_LINES = ("1200 LOAD",)   # 1090-1096: issue 18's disassembler; 1100: the user's
 
 
 def axis_boot_lines(axis):
