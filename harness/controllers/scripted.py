@@ -21,7 +21,7 @@ from harness.blocks.disk import image_block, read_image, write_atomic
 from harness.controllers.boot_lines import axis_boot_lines
 from harness.controllers.coordinator import CONTROLLERS, MAIN, MEMBERS, Coordinator
 from harness.controllers.members import MemberMachine, session_over
-from harness.machine.build import KERNEL, PRISTINE_DISK, fresh_disk
+from harness.machine.build import KERNEL, KERNEL_1103, PRISTINE_DISK, fresh_disk
 from harness.machine import script
 from harness.machine.script_run import (Failure, Result, Transcript, check_start_image,
                                         check_writable, run_steps)
@@ -95,7 +95,7 @@ class _Setup:
 
 
 def run_five(steps, directory, disk=PRISTINE_DISK, keep_going=False, line_limit=60.0,
-             kernel=KERNEL, axis_kernel=KERNEL, boot_axes=None, axis_lines=None):
+             kernel=KERNEL, axis_kernel=KERNEL_1103, boot_axes=None, axis_lines=None):
     """Run the 11/23's `steps` (script.Step) with the four 11/03s in `directory`
     (it receives the disks and the trace); the FiveResult. `boot_axes`: type the
     11/03s' boot lines (default: when the disk holds block 1080); `axis_lines`
