@@ -153,15 +153,19 @@ static void gather (ls_world *w, int listener, uint64_t k, int join_timeout_ms)
     }
 }
 
+/* The socket appears under its name only once it listens (bound under a
+   temporary name, then renamed): a member that finds the name can connect. */
 static int listen_on (const char *path)
 {
     struct sockaddr_un addr = { .sun_family = AF_UNIX };
     int fd = socket (AF_UNIX, SOCK_STREAM, 0);
-    if (fd < 0 || strlen (path) >= sizeof addr.sun_path)
+    if (fd < 0 || strlen (path) + 4 >= sizeof addr.sun_path)
         die (2, "cannot make the socket (path too long?)");
-    strcpy (addr.sun_path, path);
+    snprintf (addr.sun_path, sizeof addr.sun_path, "%s.new", path);
+    unlink (addr.sun_path);
     unlink (path);
-    if (bind (fd, (struct sockaddr *) &addr, sizeof addr) < 0 || listen (fd, LS_MEMBERS) < 0)
+    if (bind (fd, (struct sockaddr *) &addr, sizeof addr) < 0 || listen (fd, LS_MEMBERS) < 0
+        || rename (addr.sun_path, path) < 0)
         die (2, "cannot listen on the socket");
     socket_path = path;
     return fd;

@@ -78,7 +78,7 @@ def test_the_lab_page_shows_the_five_machines(tmp_path):
     disk = fresh_disk(tmp_path, "main.dsk", source=PRISTINE_DISK)
     child = harness("controllers", "launch", "--fast", "--no-boot-lines", "--lab", "--busy-wait",
                     "2", "--disk", str(disk), "--session-dir", str(tmp_path / "session"))
-    child.expect(r"the five machines' page: (http://127\.0\.0\.1:\d+/\?token=\w+)")
+    child.expect(r"the five machines' page: (http://127\.0\.0\.1:\d+/\?token=[\w-]+)")
     url = child.match.group(1)
     child.expect(" ok\r\n")
     base, token = url.split("/?token=")
