@@ -20,7 +20,11 @@ LABEL TRAPPED
   R0 STUBS 4 + # SUB,  TRAP-VEC @# R0 MOV,
   RP )+ TST,  TRAP-PC @# RP )+ MOV,
   RP ' HANDLER >BODY @# MOV,  EQ IF,  RP RP0 # MOV,  THEN,
-  S S0 # MOV,  S -) -256 # MOV,  \ priority stays 7 until the report is out
+  \ S is kept when it lies in the data stack, so that THROW's pushes do not land
+  \ on the cells a CATCH frame gives back (7 8 ' PEEK CATCH leaves 7 8 whole);
+  \ beyond S0 (underflow), below S-LIMIT or odd, it restarts at S0
+  S 1 # BIC,  R0 S MOV,  R0 S-LIMIT # SUB,  S0 S-LIMIT - # R0 CMP,
+  HI IF,  S S0 # MOV,  THEN,  S -) -256 # MOV,  \ priority stays 7 until the report is out
   IP HERE 6 + # MOV,  NEXT,  ' THROW ,  END-CODE
 LABEL TICK  ( line clock, vector 100, until a servo is installed: count ticks )
   TICKS 2 + @# 1 # ADD,  TICKS @# ADC,  RTI,  END-CODE
