@@ -95,7 +95,7 @@ class Launch:
         say("the plant is the coordinator's (its rack switched on): SET PLANT at this sim> "
             "changes only the 11/23's own plant, which nothing drives in this mode")
         extra = {"busy_wait": busy_wait} if busy_wait else {}
-        return session(PDP11, disk, fast=fast, kernel=KERNEL,
+        return session(PDP11, disk, fast=fast, kernel=KERNEL, rack_hint=False,
                        setup="".join(f"{c}\n" for c in member_settings(
                            "main", self.coordinator.socket)), **extra)
 

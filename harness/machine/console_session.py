@@ -24,10 +24,10 @@ from pathlib import Path
 
 import pexpect
 
-from harness.blocks.disk import block_ranges
+from harness.blocks.disk import DiskError, block_ranges, blocks_missing, read_image
 from harness.machine import block_buffers, pty_child
 from harness.machine import kernel_layout, simh
-from harness.machine.build import KERNEL
+from harness.machine.build import KERNEL, PRISTINE_DISK
 from harness.machine.console_halt import HaltWatcher
 from harness.machine.console_watch import Leave, LineWatcher
 from harness.machine.kernel_layout import KernelMapError, read_kernel_map
@@ -308,10 +308,25 @@ def _show(fd, data):
         pass                                 # nobody reads a closed terminal
 
 
+def missing_blocks_note(disk, pristine=PRISTINE_DISK):
+    """One line when `disk` lacks blocks the pristine image has (a working disk made
+    by an older version: make never overwrites it), else None."""
+    try:
+        missing = blocks_missing(read_image(disk), read_image(pristine))
+    except DiskError:
+        return None                          # the boot itself says what is wrong
+    if not missing:
+        return None
+    return (f"{disk} lacks blocks {block_ranges(missing)}, which this version ships (they "
+            "are blank on it). After BYE, python -m harness disk add-new copies them in "
+            "without touching a block you wrote.")
+
+
 def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BUSY_WAIT,
-            timed=False, read_only=False, setup=""):
+            timed=False, read_only=False, setup="", rack_hint=True):
     """Run the console until the user leaves; the exit status (0: all written).
-    `setup`: more SIMH lines for the boot script (boot_script)."""
+    `setup`: more SIMH lines for the boot script (boot_script); `rack_hint`: say that
+    the rack starts off (not where another plant drives the axes)."""
     with tempfile.TemporaryDirectory(prefix="console-") as tmp:
         ini = Path(tmp) / "console.ini"
         ini.write_text(boot_script(disk, trace, fast, kernel, timed, read_only, setup))
@@ -320,7 +335,11 @@ def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BU
         mode = " (read-only: FLUSH will fail)" if read_only else ""
         print(f"[console] booting the FORTH on the PDP-11/23, {pace}, disk {disk}{mode}")
         print(f"[console] {HINT}")
-        print(f"[console] {RACK_HINT}")
+        if rack_hint:
+            print(f"[console] {RACK_HINT}")
+        note = missing_blocks_note(disk)
+        if note:
+            print(f"[console] {note}")
         sys.stdout.flush()
         size = os.get_terminal_size() if sys.stdout.isatty() else os.terminal_size((80, 24))
         child = pexpect.spawn(str(simulator), [str(ini)], timeout=None,
