@@ -232,3 +232,30 @@ def save_all(figures):
         for tmp, _ in done:
             if os.path.exists(tmp):
                 os.unlink(tmp)
+
+
+def architectures_figure(columns, axes, title):
+    """Side by side, one column per (label, trace, window) and one row per axis:
+    the counter (left scale) and the DAC code (right scale) against simulated
+    time in each column's window (start, end): the same moves on two machines'
+    traces, each from its own moment the move was given."""
+    fig = Figure(figsize=(WIDTH * len(columns), 2.4 * len(axes) + 0.8), layout="constrained")
+    grid = fig.subplots(len(axes), len(columns), squeeze=False)
+    for col, (label, trace, window) in enumerate(columns):
+        for row, letter in enumerate(axes):
+            s = trace.axis(letter).window(*window)
+            if not len(s):
+                raise PlotError(f"{label}: axis {letter} has no rows in {_window_text(*window)}")
+            ax = grid[row][col]
+            ax.plot(s.time, s.counter, color="tab:purple", lw=1.2, label="counter")
+            ax.set_ylabel("counter, counts")
+            ax.set_xlabel("simulated time, s")
+            ax.set_title(f"{label}: axis {letter}", fontsize=10)
+            ax.grid(True, alpha=0.3)
+            dac = ax.twinx()
+            dac.plot(s.time, s.dac, label="D/A code", **{**STYLE["dac"], "color": "tab:green"})
+            dac.set_ylabel("D/A code (2048 = 0 V)")
+            lines = ax.get_lines() + dac.get_lines()
+            ax.legend(lines, [ln.get_label() for ln in lines], loc="best", fontsize=8)
+    fig.suptitle(title)
+    return fig
