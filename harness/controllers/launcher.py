@@ -5,7 +5,7 @@ behind it, each on its pty served by bridge.py.
     launch(fast=..., trace=...) -> exit status (the front console's)
 
 The session lives in local/controllers/ (mode 0700): the sockets, the token,
-each 11/03's console log (x.log ...) and disk (x.dsk: a fresh copy of the pristine
+each 11/03's console log (x.log ...; the 11/23's is main.log) and disk (x.dsk: a fresh copy of the pristine
 disk at every launch, one writer each). The 11/03s boot their kernel
 (build/kernel-1103.lda) and, when their disk holds block 1080, are typed their
 boot lines (boot_lines.py) at their prompts. The 11/23 is the user's, on the
@@ -96,6 +96,7 @@ class Launch:
             "changes only the 11/23's own plant, which nothing drives in this mode")
         extra = {"busy_wait": busy_wait} if busy_wait else {}
         return session(PDP11, disk, fast=fast, kernel=KERNEL, rack_hint=False,
+                       log=self.directory / "main.log",
                        setup="".join(f"{c}\n" for c in member_settings(
                            "main", self.coordinator.socket)), **extra)
 

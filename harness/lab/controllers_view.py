@@ -59,7 +59,7 @@ def tail(text, lines=TAIL_LINES):
 
 def view(status, logs):
     """status: the coordinator's status (dict) or None (not written yet); logs:
-    member -> its console's text so far (the 11/03s')."""
+    member -> its console's text so far (the 11/03s' and the 11/23's main.log)."""
     if status is None:
         return {"started": False}
     return {"started": True, "time_s": status["time_s"], "quantum": status["quantum"],

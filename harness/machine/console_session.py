@@ -11,6 +11,7 @@ simh_exit_report.) Then it erases the typed line (^U, which both the FORTH and S
 FLUSH its block buffers, checks at sim> that no UPDATEd block is left (listing the
 ones that are), detaches the trace and the disk, quits SIMH and says what happened.
 """
+import contextlib
 import os
 import re
 import select
@@ -270,12 +271,12 @@ def _restore(fd, saved):
             pass                             # the terminal has gone away
 
 
-def _converse(child, feed, watcher, halts):
+def _converse(child, feed, watcher, halts, log=None):
     """The user's terminal joined to the simulator's, until the simulator exits
     (returns) or the user leaves (Leave). Keys go through `feed`, never with a
     blocking write: the machine's output is read all the while. The end of
     input (the terminal closed) is a way out like BYE, so the FORTH still
-    FLUSHes."""
+    FLUSHes. `log`: a binary file that gets a copy of what the terminal shows."""
     fd_in, fd_out, fd_sim = sys.stdin.fileno(), sys.stdout.fileno(), child.child_fd
     saved = _raw(fd_in)
     try:
@@ -289,7 +290,11 @@ def _converse(child, feed, watcher, halts):
                 if not data:
                     return
                 feed.output(data)
-                _show(fd_out, shown(halts.feed(watcher.output(data))))
+                data = shown(halts.feed(watcher.output(data)))
+                _show(fd_out, data)
+                if log is not None:
+                    log.write(data)
+                    log.flush()
             if fd_in in ready:
                 data = os.read(fd_in, 1 << 16)
                 if not data:
@@ -323,10 +328,11 @@ def missing_blocks_note(disk, pristine=PRISTINE_DISK):
 
 
 def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BUSY_WAIT,
-            timed=False, read_only=False, setup="", rack_hint=True):
+            timed=False, read_only=False, setup="", rack_hint=True, log=None):
     """Run the console until the user leaves; the exit status (0: all written).
     `setup`: more SIMH lines for the boot script (boot_script); `rack_hint`: say that
-    the rack starts off (not where another plant drives the axes)."""
+    the rack starts off (not where another plant drives the axes); `log`: a file that
+    gets a copy of what the terminal shows (the five machines' page reads it)."""
     with tempfile.TemporaryDirectory(prefix="console-") as tmp:
         ini = Path(tmp) / "console.ini"
         ini.write_text(boot_script(disk, trace, fast, kernel, timed, read_only, setup))
@@ -350,7 +356,8 @@ def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BU
         hangup = signal.signal(signal.SIGHUP, _on_hangup)
         try:
             halts = HaltWatcher(kernel, kernel_layout.entry(Path(kernel).with_suffix(".map")) or 0)
-            _converse(child, feed, watcher, halts)
+            with open(log, "ab") if log else contextlib.nullcontext() as copy:
+                _converse(child, feed, watcher, halts, copy)
         except Leave as way:
             signal.signal(signal.SIGHUP, signal.SIG_IGN)     # leaving: no second hangup
             if way.how == HANGUP:

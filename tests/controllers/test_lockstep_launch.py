@@ -59,6 +59,8 @@ def test_a_killed_11_03_is_reported_within_a_second_and_the_rest_goes_on(five):
     child.expect(r"61416 @ \. (-?\d+)  ok")
     assert int(child.match.group(1)) & 0o400
     assert leave(child) == 0
+    main_log = (five[2] / "main.log").read_text(encoding="latin-1")   # the page's 11/23 panel
+    assert "1 2 + . 3  ok" in main_log and "61416 @ ." in main_log
 
 
 def test_an_11_03_console_is_reached_from_another_terminal(five):

@@ -22,7 +22,7 @@ function render(v) {
   machines.replaceChildren(...v.machines.map(m => {
     const div = document.createElement("div");
     div.className = "machine" + (m.state === "lost" ? " lost" : "");
-    const h = document.createElement("h2");
+    const h = document.createElement("h3");
     h.textContent = (m.name === "main" ? "PDP-11/23" : `LSI-11/03 ${m.name}`) + `: ${m.state}`;
     const pre = document.createElement("pre");
     pre.textContent = m.console;
@@ -31,7 +31,7 @@ function render(v) {
   }));
   document.getElementById("servo").replaceChildren(...v.servo.map(a => {
     const tr = document.createElement("tr");
-    tr.append(cell(a.axis, "text"), cell(a.target), cell(a.max_vel), cell(yesNo(a.executing)),
+    tr.append(cell(a.axis, `text axis-${a.axis}`), cell(a.target), cell(a.max_vel), cell(yesNo(a.executing)),
               cell(yesNo(a.moving)), cell(a.counter), cell(a.pos.toFixed(1)),
               cell(a.vel.toFixed(1)), cell(a.dac), cell(a.run),
               cell(a.last_words.join(" "), "text"), cell(a.last_answers.join(" "), "text"));
