@@ -100,7 +100,7 @@ static t_stat kwl_set_idle_speed (UNIT *uptr, int32 val, char *cptr, void *desc)
 
 static t_stat kwl_show_idle_speed (FILE *st, UNIT *uptr, int32 val, void *desc)
 {
-    fprintf (st, "idlespeed=%d", idle_speed);
+    fprintf (st, "idlespeed=%d\n", idle_speed);      /* MTAB_NMO: SIMH ends no line */
     return SCPE_OK;
 }
 
@@ -128,7 +128,7 @@ static MTAB kwl_mod[] = {
     { MTAB_XTD|MTAB_VDV, 0, "STATE", NULL, NULL, &kwl_show_state, NULL },
     { MTAB_XTD|MTAB_VDV, 1, NULL, "REALTIME", &kwl_set_realtime, NULL, NULL },
     { MTAB_XTD|MTAB_VDV, 0, NULL, "NOREALTIME", &kwl_set_realtime, NULL, NULL },
-    { MTAB_XTD|MTAB_VDV, 0, "IDLESPEED", "IDLESPEED", &kwl_set_idle_speed,
+    { MTAB_XTD|MTAB_VDV|MTAB_NMO, 0, "IDLESPEED", "IDLESPEED", &kwl_set_idle_speed,
       &kwl_show_idle_speed, NULL },
     { MTAB_XTD|MTAB_VDV, 1, NULL, "TIMED", &kwl_set_timed, NULL, NULL },
     { MTAB_XTD|MTAB_VDV, 0, NULL, "NOTIMED", &kwl_set_timed, NULL, NULL },
