@@ -24,6 +24,7 @@ COMMANDS = {
     "timing": "price the executions of a piece of PDP-11 code on a KDF11-A (11/23)",
     "listing": "list blocks beside the addresses and words each line compiled or assembled",
     "tick": "walk the 1983 servo one 60 Hz tick at a time: its arrays, counters and DACs",
+    "controllers": "the 11/23 and four LSI-11/03 axis controllers in lock-step on one plant",
 }
 
 

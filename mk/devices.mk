@@ -18,9 +18,11 @@
 # table.
 DEV_OBJ    := $(BUILD)/obj/devices
 DEV_DIR    := pdp11-devices
-DEV_KINDS  := bus plant lab simh
+DEV_KINDS  := bus plant lab simh lockstep
 DEV_HDRS   := $(wildcard $(DEV_DIR)/*.h $(DEV_KINDS:%=$(DEV_DIR)/%/*.h))
-DEV_GLUE   := $(wildcard $(DEV_KINDS:%=$(DEV_DIR)/%/*.c))
+# lockstep/coordinator.c and barrier_bench.c are programs of their own, not devices
+DEV_GLUE   := $(filter-out $(DEV_DIR)/lockstep/coordinator.c $(DEV_DIR)/lockstep/barrier_bench.c,\
+                $(wildcard $(DEV_KINDS:%=$(DEV_DIR)/%/*.c)))
 DEV_OBJS   := $(patsubst $(DEV_DIR)/%.c,$(DEV_OBJ)/%.o,$(DEV_GLUE))
 DEV_INCS   := -I $(DEV_DIR) $(DEV_KINDS:%=-I $(DEV_DIR)/%)
 ROBOT_SYS  := $(DEV_OBJ)/pdp11_sys_stock.o
@@ -54,10 +56,12 @@ $(KDF11_TABLE): harness/analysis/kdf11.py harness/analysis/kdf11_table.py | $(VE
 
 $(DEV_OBJ)/simh/kdf11_time.o: $(KDF11_TABLE)
 
-# the pure mechanics (no SIMH types): strict flags, tested alone
-$(DEV_OBJ)/plant/plant.o $(DEV_OBJ)/plant/gripper.o: $(DEV_OBJ)/plant/%.o: $(DEV_DIR)/plant/%.c $(DEV_DIR)/plant/%.h
+# the pure mechanics and lock-step logic (no SIMH types): strict flags, tested alone
+PURE_OBJS := $(addprefix $(DEV_OBJ)/plant/,plant.o gripper.o plant_row.o) \
+             $(addprefix $(DEV_OBJ)/lockstep/,link.o quantum.o wire_io.o)
+$(PURE_OBJS): $(DEV_OBJ)/%.o: $(DEV_DIR)/%.c $(DEV_HDRS)
 	@mkdir -p $(dir $@)
-	@$(CC) $(PLANT_CFLAGS) -c $< -o $@
+	@$(CC) $(PLANT_CFLAGS) $(DEV_INCS) -c $< -o $@
 
 $(DEV_OBJ)/%.o: $(DEV_DIR)/%.c $(DEV_HDRS) $(SIMH_STAMP)
 	@mkdir -p $(dir $@)
@@ -79,10 +83,24 @@ $(BUILD)/plant_test: tests/devices/plant_test.c $(DEV_OBJ)/plant/plant.o
 $(BUILD)/gripper_test: tests/devices/gripper_test.c $(DEV_OBJ)/plant/gripper.o
 	@$(CC) $(PLANT_CFLAGS) -I $(DEV_DIR)/plant -o $@ $^ -lm
 
+# The lock-step coordinator (pdp11-devices/lockstep/coordinator.c: the one plant of the five
+# machines, docs/controllers.md) and its pure logic's test.
+LOCKSTEP_PURE := $(filter $(DEV_OBJ)/plant/% $(DEV_OBJ)/lockstep/%,$(PURE_OBJS))
+$(BUILD)/lockstep-coordinator: $(DEV_DIR)/lockstep/coordinator.c $(LOCKSTEP_PURE) $(DEV_HDRS)
+	@$(CC) $(PLANT_CFLAGS) $(DEV_INCS) -o $@ $< $(LOCKSTEP_PURE) -lm
+
+$(BUILD)/barrier-bench: $(DEV_DIR)/lockstep/barrier_bench.c $(DEV_OBJ)/lockstep/wire_io.o $(DEV_HDRS)
+	@$(CC) $(PLANT_CFLAGS) $(DEV_INCS) -o $@ $< $(DEV_OBJ)/lockstep/wire_io.o
+
+$(BUILD)/lockstep_test: tests/controllers/lockstep_test.c $(LOCKSTEP_PURE) $(DEV_HDRS)
+	@$(CC) $(PLANT_CFLAGS) $(DEV_INCS) -o $@ $< $(LOCKSTEP_PURE) -lm
+
 # pdp11-stock too: the reference the benchmark and tests/test_simh_stock.py use.
-ALL_PRODUCTS += $(BUILD)/pdp11 $(BUILD)/pdp11-plain $(BUILD)/pdp11-timed $(BUILD)/plant_test $(BUILD)/gripper_test $(BUILD)/pdp11-stock
+ALL_PRODUCTS += $(BUILD)/pdp11 $(BUILD)/pdp11-plain $(BUILD)/pdp11-timed $(BUILD)/plant_test $(BUILD)/gripper_test $(BUILD)/pdp11-stock \
+                $(BUILD)/lockstep-coordinator $(BUILD)/lockstep_test $(BUILD)/barrier-bench
 
 bench-devices: $(BUILD)/pdp11 $(BUILD)/pdp11-plain $(BUILD)/pdp11-guided $(BUILD)/pdp11-stock $(BUILD)/kernel.lda $(PRISTINE_DSK) venv  ## the C devices' cost: plain, guided and stock builds
 	@$(PY) -m harness.bench.bench_devices
 BENCHES += bench-devices
 .PHONY: bench-devices
+

@@ -5,5 +5,16 @@
 #   make run FAST=1      full speed while the FORTH works, the 11/23's pace while it waits for a key
 #   make run TRACE=f.csv record the plant trace
 #   make run TIMED=1     11/23 time: each instruction its KDF11-A time (SET CLK TIMED)
-run: $(BUILD)/pdp11 $(BUILD)/pdp11-timed $(BUILD)/kernel.lda $(BUILD)/kernel.map $(WORK_DSK) venv  ## the interactive FORTH console on your working disk
+#   make run CONTROLLERS=4  the 11/23 and four LSI-11/03 axis controllers in lock-step
+#                        (issue 21, docs/controllers.md; FAST and TRACE apply; LAB=1
+#                        serves the lab's page of the five machines)
+ifeq ($(CONTROLLERS),)
+run: $(BUILD)/pdp11 $(BUILD)/pdp11-timed $(BUILD)/kernel.lda $(BUILD)/kernel.map $(WORK_DSK) venv  ## the interactive FORTH console on your working disk (CONTROLLERS=4: five machines)
 	@$(PY) -m harness console $(if $(FAST),--fast) $(if $(TRACE),--trace $(TRACE)) $(if $(TIMED),--timed)
+else ifeq ($(CONTROLLERS),4)
+run: $(BUILD)/pdp11 $(BUILD)/lockstep-coordinator $(BUILD)/kernel.lda $(BUILD)/kernel.map $(BUILD)/kernel-1103.lda $(PRISTINE_DSK) $(WORK_DSK) venv
+	@$(PY) -m harness controllers launch $(if $(FAST),--fast) $(if $(TRACE),--trace $(TRACE)) $(if $(LAB),--lab)
+else
+run:
+	@echo "make run CONTROLLERS=$(CONTROLLERS): the five-machine run has four controllers (CONTROLLERS=4)" >&2; exit 2
+endif

@@ -6,6 +6,8 @@
 #include "pdp11_defs.h"
 #include "plant.h"
 #include "gripper.h"
+#include "plant_row.h"
+#include "link.h"
 
 /* Time base (time_base.c): simulated time = executed instructions / rate. */
 extern int32 clock_rate;                 /* instructions per simulated second */
@@ -35,7 +37,6 @@ void plant_dev_catch_up (void);                   /* integrate up to now */
 void plant_dev_dac (int axis, int code);          /* AAV11-A wrote a channel */
 void plant_dev_run_lines (int lines);             /* DRV11 OUTBUF bits 3:0 */
 uint16 plant_dev_counter (int axis);              /* DRV11 INBUF */
-extern const char plant_dev_columns[];            /* the plant's row: its CSV header */
 void plant_dev_write_row (FILE *f, int axis);     /* one row (trace, LAB P rows) */
 extern gripper robot_gripper;
 void plant_dev_gripper_lines (int step, int dir);  /* DRV11 OUTBUF bits 4, 5 */
@@ -50,6 +51,19 @@ void plant_dev_rate_changed (int32 old_rate);     /* pending samples keep their 
 void plant_dev_command_done (void);               /* after each SCP command */
 void rack_hint_enable (int on);                   /* SET PLANT HINT (rack_hint.c) */
 void rack_hint_dac (int axis, int code);          /* at each DAC write */
+
+/* Lock-step (simh/lockstep_dev.c): the role of this machine among the five, and
+   the plant glue's way to it while a role is set; the links (bus/link_dev.c). */
+#define LOCKSTEP_NONE (-1)
+extern int lockstep_role;                         /* LOCKSTEP_NONE, 0..3 an axis, 4 MAIN */
+void lockstep_dac (int channel, int code);
+void lockstep_run_lines (int lines);
+uint16 lockstep_counter (void);
+void lockstep_rate_changed (int32 old_rate);
+void link_dev_configure (int links);              /* 0 (absent), 1 (11/03), 4 (11/23) */
+link_wire link_dev_take_wire (int i);
+void link_dev_deliver (int i, link_wire w);
+void link_dev_peer_lost (int i);
 
 /* Text files written by a device (text_attach.c): `what` starts the error message. */
 t_stat device_attach_text (UNIT *uptr, char *cptr, const char *what);
@@ -84,7 +98,7 @@ void io_break_show (FILE *st);
 /* The lab bench's device (lab.c): its part of a rate change. */
 void lab_rate_changed (int32 old_rate);
 
-extern DEVICE kwl_dev, drv_dev, aav_dev, plant_dev, lab_dev, cue_dev;
+extern DEVICE kwl_dev, drv_dev, aav_dev, plant_dev, lab_dev, cue_dev, lockstep_dev, link_dev[];
 
 /* Byte writes (SIMH passes the byte in data<7:0>, PA<0> says which half). */
 #define MERGE_BYTE(old, data, pa, access) \

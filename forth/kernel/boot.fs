@@ -20,7 +20,11 @@ LABEL TRAPPED
   R0 STUBS 4 + # SUB,  TRAP-VEC @# R0 MOV,
   RP )+ TST,  TRAP-PC @# RP )+ MOV,
   RP ' HANDLER >BODY @# MOV,  EQ IF,  RP RP0 # MOV,  THEN,
-  S S0 # MOV,  S -) -256 # MOV,  \ priority stays 7 until the report is out
+  \ S is kept when it lies in the data stack, so that THROW's pushes do not land
+  \ on the cells a CATCH frame gives back (7 8 ' PEEK CATCH leaves 7 8 whole);
+  \ beyond S0 (underflow), below S-LIMIT or odd, it restarts at S0
+  S 1 # BIC,  R0 S MOV,  R0 S-LIMIT # SUB,  S0 S-LIMIT - # R0 CMP,
+  HI IF,  S S0 # MOV,  THEN,  S -) -256 # MOV,  \ priority stays 7 until the report is out
   IP HERE 6 + # MOV,  NEXT,  ' THROW ,  END-CODE
 LABEL TICK  ( line clock, vector 100, until a servo is installed: count ticks )
   TICKS 2 + @# 1 # ADD,  TICKS @# ADC,  RTI,  END-CODE
@@ -33,12 +37,13 @@ LABEL ENTRY
   177560O @# 100O # MOV,
   \ memory management on, in kernel mode, every page mapped to itself (18-bit
   \ mode): it costs no instruction; its one job is page 6's length, which ends
-  \ at S0, so a word that takes more than the data stack holds traps (MMU-TRAP)
-  R0 KIPDR # MOV,  T KIPAR # MOV,  W CLR,
+  \ at S0, so a word that takes more than the data stack holds traps (MMU-TRAP);
+  \ the 11/03 has none and branches over it (forth/meta/target.fs)
+  MMU{  R0 KIPDR # MOV,  T KIPAR # MOV,  W CLR,
   BEGIN,  R0 )+ 77406O # MOV,  T )+ W MOV,  W 200O # ADD,  T KIPAR 16 + # CMP,  EQ UNTIL,
   KIPDR 12 + @# S0 140000O - 100O / 1- 10O LSHIFT 6 + # MOV,   \ page 6 ends at S0
   KIPAR 14 + @# 7600O # MOV,   \ page 7: the I/O page
-  MMR0 @# 1 # MOV,
+  MMR0 @# 1 # MOV,  }MMU
   \ free dictionary space holds a reserved instruction (000040): a wild jump past
   \ HERE traps and is reported instead of running into HALT (zero) and stopping;
   \ run as a thread it is the xt 40, and address 40 holds another (build.fs)

@@ -1,6 +1,7 @@
 \ forth/meta/build.fs: metacompile the kernel; write build/kernel.lda and
 \ build/kernel.map. Run from the repository root:
 \   gforth forth/meta/build.fs -e bye
+\ (forth/meta/build-1103.fs: the same kernel for the LSI-11/03, target.fs)
 \ Exits non-zero, naming file and line, on any error or unresolved reference.
 
 require load.fs
@@ -62,7 +63,14 @@ write-heads
   \ jumped into and run as a thread (an xt of 40) traps
   $8 $20 t! ;
 fill-vectors
-0 there lbl ENTRY s" build/kernel.lda" write-lda
-s" build/kernel.map" write-map
+\ the 11/03's banner names its machine (same length: the layout does not move)
+: name-1103 ( -- )  s" BANNER" tcfa-of  there swap ?do
+    i taddr 9 s" PDP-11/23" compare 0= if [char] 0 i 7 + tc! unloop exit then
+  loop  s" BANNER's machine name not found" fail ;
+lsi-11 [if] name-1103 [then]
+: out-lda ( -- a u )  lsi-11 if s" build/kernel-1103.lda" else s" build/kernel.lda" then ;
+: out-map ( -- a u )  lsi-11 if s" build/kernel-1103.map" else s" build/kernel.map" then ;
+0 there lbl ENTRY out-lda write-lda
+out-map write-map
 .( kernel: ) there lbl ORIGIN - . .( bytes, ) 
 lbl LIMIT there - 160 - . .( bytes free, entry ) lbl ENTRY .oct6 cr

@@ -2,6 +2,7 @@
 \ tests include this, then read kernel sources with meta-include).
 warnings off   \ gforth has its own A, and A!: ours are meant
 require image.fs
+require target.fs
 include ../asm-host.fs
 require meta.fs
 require defs.fs

@@ -6,8 +6,12 @@ A scenario is NAME.script (a console script, docs/console.md) with beside it
   NAME.features   expected plant-trace features with tolerances
                   (harness/analysis/trace_features.py)
 and, in the script's comments, "# needs: 1000 LOAD" (skipped while the appendix
-blocks cannot load on this kernel) and "# fails-at: N" (the run must stop with
-exit status 1 at script line N, naming it, and run nothing after it).
+blocks cannot load on this kernel), "# fails-at: N" (the run must stop with
+exit status 1 at script line N, naming it, and run nothing after it) and
+"# machines: five" (the script is the 11/23's in a run of the five machines of
+issue 21, harness/controllers: NAME.expected holds the five transcripts, each
+under a "===== member" line; the runner comes from the caller, `five_runner`,
+as this package may not import that one).
 """
 import difflib
 import functools
@@ -23,7 +27,7 @@ from harness.machine.script_run import ERRORS, run_file
 
 SCENARIOS = ROOT / "tests" / "regression" / "scenarios"
 FREE = re.compile(r"\d+ bytes free")
-META = re.compile(r"^#\s*(needs|fails-at|options):\s*(.*?)\s*$", re.M)
+META = re.compile(r"^#\s*(needs|fails-at|options|machines):\s*(.*?)\s*$", re.M)
 
 
 @dataclass
@@ -45,6 +49,10 @@ class Scenario:
     def fails_at(self):
         found = self.meta("fails-at")
         return int(found[0]) if found else None
+
+    @property
+    def five(self):
+        return "five" in self.meta("machines")
 
     @property
     def options(self):
@@ -87,13 +95,20 @@ def run_options(options):
     return kwargs
 
 
-def run(scenario, out_dir):
+def run(scenario, out_dir, five_runner=None):
     """Run the scenario (script_run.run_file, as the `run` command does, with the
-    scenario's options) into out_dir; its outcome, stderr as `run` prints it."""
+    scenario's options; a five-machine one with `five_runner`, which takes the
+    same arguments) into out_dir; its outcome, stderr as `run` prints it."""
     transcript = Path(out_dir) / f"{scenario.name}.transcript"
     trace = Path(out_dir) / f"{scenario.name}.trace.csv"
+    runner = run_file
+    if scenario.five:
+        if five_runner is None:
+            raise ValueError(f"{scenario.name}: a five-machine scenario needs the caller's "
+                             "runner (python -m harness regress has it)")
+        runner = five_runner
     try:
-        _, result = run_file(scenario.path, transcript, trace, **run_options(scenario.options))
+        _, result = runner(scenario.path, transcript, trace, **run_options(scenario.options))
     except ERRORS as err:
         return Outcome(1, "".join(f"python -m harness run: error: {line}\n"
                                   for line in str(err).splitlines()), "", {})
@@ -176,7 +191,7 @@ def skip_reason(scenario):
     return ""
 
 
-def main(names=(), update_goldens=False):
+def main(names=(), update_goldens=False, five_runner=None):
     """Run scenarios, print a report; the exit status (0: all agree)."""
     bad = 0
     for scenario in scenarios(names):
@@ -185,7 +200,7 @@ def main(names=(), update_goldens=False):
             print(f"{scenario.name}: skipped: {reason}")
             continue
         with tempfile.TemporaryDirectory() as tmp:
-            outcome = run(scenario, tmp)
+            outcome = run(scenario, tmp, five_runner)
         if update_goldens:
             status = [p for p in problems(scenario, outcome) if p.startswith(("exit", "the f"))]
             for p in status:

@@ -189,6 +189,33 @@ def image_block(image, n):
     return image[n * BLOCK_BYTES:(n + 1) * BLOCK_BYTES]
 
 
+def blocks_missing(work, pristine):
+    """Block numbers blank on the image `work` and written on `pristine` (both image
+    bytes): the blocks a newer version of the project ships that a working disk made
+    by an older one lacks (make never overwrites local/robot.dsk)."""
+    return [n for n in range(BLOCKS)
+            if is_blank(image_block(work, n)) and not is_blank(image_block(pristine, n))]
+
+
+def add_missing_blocks(work_path, pristine_path):
+    """Copy into the image at `work_path` every block blank there and written on
+    `pristine_path`; no written block of `work_path` is touched. Refused (DiskError,
+    nothing written) while a simulator writes the image. Returns the block numbers."""
+    check_image(work_path)
+    check_not_held(work_path, why="leave it first: BYE at its console")
+    work, pristine = read_image(work_path), read_image(pristine_path)
+    missing = blocks_missing(work, pristine)
+    if missing:
+        merged = bytearray(work)
+        for n in missing:
+            merged[n * BLOCK_BYTES:(n + 1) * BLOCK_BYTES] = image_block(pristine, n)
+        try:
+            write_atomic(work_path, bytes(merged))
+        except OSError as err:
+            raise DiskError(f"{work_path}: cannot write the image: {err.strerror}") from err
+    return missing
+
+
 def write_atomic(path, data):
     """Write `data` (bytes) to `path` through a temporary file renamed into place."""
     path = Path(path)

@@ -1,8 +1,11 @@
-"""`disk`: pack a blocks/ directory into an RL02 image, export blocks back to text."""
+"""`disk`: pack a blocks/ directory into an RL02 image, export blocks back to text,
+add to a working disk the blocks a newer version ships."""
 import sys
 
-from harness.blocks.disk import (BLOCKS, DiskError, block_ranges, carry_out_export, pack,
-                          plan_export, read_block_dir, read_image, write_atomic)
+from harness.blocks.disk import (BLOCKS, DiskError, add_missing_blocks, block_ranges,
+                                 carry_out_export, pack, plan_export, read_block_dir,
+                                 read_image, write_atomic)
+from harness.machine.build import PRISTINE_DISK, WORKING_DISK
 
 ERRORS = (DiskError,)
 
@@ -34,6 +37,18 @@ def configure(parser):
                    help="overwrite existing files that differ")
     e.set_defaults(run=run_export)
 
+    a = sub.add_parser("add-new", help="add to a working disk the blocks it lacks "
+                       "(blank there, written on the pristine image)",
+                       description="Copy into IMAGE each block that is blank there and "
+                       "written on the pristine image: the blocks a newer version of the "
+                       "project ships (make never overwrites your working disk). A block "
+                       "you wrote is never touched. Refused while a simulator has IMAGE.")
+    a.add_argument("image", metavar="IMAGE", nargs="?", default=str(WORKING_DISK),
+                   help="the image to complete (default: local/robot.dsk)")
+    a.add_argument("--from", dest="pristine", default=str(PRISTINE_DISK), metavar="PRISTINE",
+                   help="where the blocks come from (default: build/robot.dsk)")
+    a.set_defaults(run=run_add_new)
+
 
 def run_pack(args):
     blocks, warnings = read_block_dir(args.source_dir)
@@ -64,4 +79,15 @@ def run_export(args):
               "are blank (--all exports blank blocks)")
     elif skipped and args.last - args.first < 100:
         print(f"blank, not exported: {block_ranges(skipped)} (--all exports them)")
+    return 0
+
+
+def run_add_new(args):
+    added = add_missing_blocks(args.image, args.pristine)
+    if added:
+        print(f"{args.image}: {len(added)} blocks added from {args.pristine} "
+              f"({block_ranges(added)}); no written block was changed")
+    else:
+        print(f"{args.image}: nothing to add: every block written on {args.pristine} "
+              "is written here too")
     return 0

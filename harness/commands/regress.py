@@ -4,6 +4,7 @@ import argparse
 from harness.analysis.trace_features import FeatureError
 from harness.blocks.disk import DiskError
 from harness.analysis import regression
+from harness.controllers.scripted import run_five_file
 from harness.machine.build import PRISTINE_DISK
 from harness.machine.script_run import check_start_image
 
@@ -35,4 +36,4 @@ def configure(parser):
 def run(args):
     """Every scenario boots a copy of build/robot.dsk: check it once, before any."""
     check_start_image(PRISTINE_DISK)
-    return regression.main(args.names, args.update)
+    return regression.main(args.names, args.update, five_runner=run_five_file)

@@ -53,14 +53,14 @@ SETTABLE = {   # device: (its modifiers in table order, those the page may set)
     "LAB": (("SPEED", "IOBREAK", "NOIOBREAK"), None),
 }
 # Devices whose units SIMH backs with host files (disks, tapes, paper tape, cards,
-# printer) or sockets (DZ, VH, XQ): a DEPOSIT into one writes that file. The others
+# printer) or sockets (DZ, VH, XQ, LOCKSTEP: the five machines' coordinator): a DEPOSIT into one writes that file. The others
 # (CPU, the bus devices, the plant) hold registers only. tests/lab/test_sim_commands.py
 # checks that every device of the lab's machine is in one list or the other.
 FILE_DEVICES = ("PTR", "PTP", "CR", "LPT", "DZ", "VH", "RC", "RF", "RK", "RL", "HK",
                 "RX", "RY", "RP", "RQ", "RQB", "RQC", "RQD", "TC", "TM", "TS", "TQ",
-                "TU", "TA", "XQ", "XQB", "XU", "XUB", "DLI", "DLO", "DCI", "DCO")
+                "TU", "TA", "XQ", "XQB", "XU", "XUB", "DLI", "DLO", "DCI", "DCO", "LOCKSTEP")
 REGISTER_DEVICES = ("CPU", "SYSTEM", "RHA", "RHB", "PCLK", "CLK", "TTI", "TTO", "KE", "KG", "DRV11",
-                    "AAV11", "PLANT", "LAB", "CUE")
+                    "AAV11", "PLANT", "LAB", "CUE", "LINK0", "LINK1", "LINK2", "LINK3")
 
 
 def words(text):

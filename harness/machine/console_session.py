@@ -11,6 +11,7 @@ simh_exit_report.) Then it erases the typed line (^U, which both the FORTH and S
 FLUSH its block buffers, checks at sim> that no UPDATEd block is left (listing the
 ones that are), detaches the trace and the disk, quits SIMH and says what happened.
 """
+import contextlib
 import os
 import re
 import select
@@ -24,10 +25,10 @@ from pathlib import Path
 
 import pexpect
 
-from harness.blocks.disk import block_ranges
+from harness.blocks.disk import DiskError, block_ranges, blocks_missing, read_image
 from harness.machine import block_buffers, pty_child
 from harness.machine import kernel_layout, simh
-from harness.machine.build import KERNEL
+from harness.machine.build import KERNEL, PRISTINE_DISK
 from harness.machine.console_halt import HaltWatcher
 from harness.machine.console_watch import Leave, LineWatcher
 from harness.machine.kernel_layout import KernelMapError, read_kernel_map
@@ -56,13 +57,16 @@ RACK_HINT = ("The amplifier rack starts OFF: the axes stand still. After Set.Up.
 SIMH_ERROR = re.compile(r"(Unit not attached|Non-existent[^\r\n]*|[A-Z][^\r\n]*error[^\r\n]*)")
 
 
-def boot_script(disk, trace=None, fast=False, kernel=KERNEL, timed=False, read_only=False):
+def boot_script(disk, trace=None, fast=False, kernel=KERNEL, timed=False, read_only=False,
+                setup=""):
     """The console's machine: paced (or idling) as asked, the rack off, a trace;
-    timed: each instruction takes its KDF11-A time (SET CLK TIMED)."""
+    timed: each instruction takes its KDF11-A time (SET CLK TIMED); `setup`: more
+    SIMH lines (the five machines' lock-step: harness/controllers/launcher.py)."""
     trace_line = f"attach plant {Path(trace).resolve()}\n" if trace else ""
     return simh.boot_script(disk, kernel, setup=f"{IDLE if fast else REALTIME}\n"
                             + ("set clk timed\n" if timed else "")
-                            + f"{RACK_OFF}\n{RACK_HINT_ON}\n{trace_line}", read_only=read_only)
+                            + f"{RACK_OFF}\n{RACK_HINT_ON}\n{trace_line}" + setup,
+                            read_only=read_only)
 
 
 def simh_exit_report(status, disk):
@@ -267,12 +271,12 @@ def _restore(fd, saved):
             pass                             # the terminal has gone away
 
 
-def _converse(child, feed, watcher, halts):
+def _converse(child, feed, watcher, halts, log=None):
     """The user's terminal joined to the simulator's, until the simulator exits
     (returns) or the user leaves (Leave). Keys go through `feed`, never with a
     blocking write: the machine's output is read all the while. The end of
     input (the terminal closed) is a way out like BYE, so the FORTH still
-    FLUSHes."""
+    FLUSHes. `log`: a binary file that gets a copy of what the terminal shows."""
     fd_in, fd_out, fd_sim = sys.stdin.fileno(), sys.stdout.fileno(), child.child_fd
     saved = _raw(fd_in)
     try:
@@ -286,7 +290,11 @@ def _converse(child, feed, watcher, halts):
                 if not data:
                     return
                 feed.output(data)
-                _show(fd_out, shown(halts.feed(watcher.output(data))))
+                data = shown(halts.feed(watcher.output(data)))
+                _show(fd_out, data)
+                if log is not None:
+                    log.write(data)
+                    log.flush()
             if fd_in in ready:
                 data = os.read(fd_in, 1 << 16)
                 if not data:
@@ -305,18 +313,39 @@ def _show(fd, data):
         pass                                 # nobody reads a closed terminal
 
 
+def missing_blocks_note(disk, pristine=PRISTINE_DISK):
+    """One line when `disk` lacks blocks the pristine image has (a working disk made
+    by an older version: make never overwrites it), else None."""
+    try:
+        missing = blocks_missing(read_image(disk), read_image(pristine))
+    except DiskError:
+        return None                          # the boot itself says what is wrong
+    if not missing:
+        return None
+    return (f"{disk} lacks blocks {block_ranges(missing)}, which this version ships (they "
+            "are blank on it). After BYE, python -m harness disk add-new copies them in "
+            "without touching a block you wrote.")
+
+
 def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BUSY_WAIT,
-            timed=False, read_only=False):
-    """Run the console until the user leaves; the exit status (0: all written)."""
+            timed=False, read_only=False, setup="", rack_hint=True, log=None):
+    """Run the console until the user leaves; the exit status (0: all written).
+    `setup`: more SIMH lines for the boot script (boot_script); `rack_hint`: say that
+    the rack starts off (not where another plant drives the axes); `log`: a file that
+    gets a copy of what the terminal shows (the five machines' page reads it)."""
     with tempfile.TemporaryDirectory(prefix="console-") as tmp:
         ini = Path(tmp) / "console.ini"
-        ini.write_text(boot_script(disk, trace, fast, kernel, timed, read_only))
+        ini.write_text(boot_script(disk, trace, fast, kernel, timed, read_only, setup))
         pace = "full speed" if fast else ("real-time pace (KDF11-A instruction times)" if timed
                                           else "real-time pace (300K instructions/s)")
         mode = " (read-only: FLUSH will fail)" if read_only else ""
         print(f"[console] booting the FORTH on the PDP-11/23, {pace}, disk {disk}{mode}")
         print(f"[console] {HINT}")
-        print(f"[console] {RACK_HINT}")
+        if rack_hint:
+            print(f"[console] {RACK_HINT}")
+        note = missing_blocks_note(disk)
+        if note:
+            print(f"[console] {note}")
         sys.stdout.flush()
         size = os.get_terminal_size() if sys.stdout.isatty() else os.terminal_size((80, 24))
         child = pexpect.spawn(str(simulator), [str(ini)], timeout=None,
@@ -327,7 +356,8 @@ def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BU
         hangup = signal.signal(signal.SIGHUP, _on_hangup)
         try:
             halts = HaltWatcher(kernel, kernel_layout.entry(Path(kernel).with_suffix(".map")) or 0)
-            _converse(child, feed, watcher, halts)
+            with open(log, "ab") if log else contextlib.nullcontext() as copy:
+                _converse(child, feed, watcher, halts, copy)
         except Leave as way:
             signal.signal(signal.SIGHUP, signal.SIG_IGN)     # leaving: no second hangup
             if way.how == HANGUP:

@@ -25,11 +25,13 @@ def numbers(text):
 
 class Robot(ScriptedMachine):
     def __init__(self, disk, trace=None, simulator=PDP11, kernel=KERNEL, timeout=60,
-                 sample=None):
-        """`timeout`: simulated seconds a line may run before it is reported."""
+                 sample=None, settings=()):
+        """`timeout`: simulated seconds a line may run before it is reported;
+        `settings`: SIMH commands before the kernel is loaded (build.CPU_1103)."""
         super().__init__(disk, trace=trace, simulator=simulator, kernel=kernel,
                          line_limit=timeout,
-                         settings=[f"set plant sample={sample}"] if sample is not None else ())
+                         settings=[*settings] + ([f"set plant sample={sample}"]
+                                                 if sample is not None else []))
         self.banner = self.boot_output
 
     def _text(self, answer, line=""):

@@ -146,15 +146,9 @@ void plant_dev_on_lines_changed (void (*hook) (void))
     lines_changed = hook;
 }
 
-const char plant_dev_columns[] = "time_s,axis,dac,vcmd,vel,pos,counter,grip,contact,missed";
-
 void plant_dev_write_row (FILE *f, int axis)
 {
-    const plant_axis *a = &robot_plant.ax[axis];
-    fprintf (f, "%.9f,%c,%d,%.3f,%.3f,%.3f,%d,%.2f,%d,%lu\n", robot_plant.now,
-             plant_axis_names[axis], a->code, plant_vcmd (&robot_plant, axis), a->v, a->p,
-             (int) (int16) plant_counter (&robot_plant, axis), gripper_opening (&robot_gripper),
-             gripper_contact (&robot_gripper), robot_gripper.missed);
+    plant_row_write (f, &robot_plant, &robot_gripper, axis);
 }
 
 static void trace_row (int axis)
@@ -162,8 +156,14 @@ static void trace_row (int axis)
     plant_dev_write_row (plant_unit.fileref, axis);
 }
 
+/* With a lock-step role the bus devices reach the coordinator's plant
+   (simh/lockstep_dev.c) and this one stands still. */
 void plant_dev_dac (int axis, int code)
 {
+    if (lockstep_role != LOCKSTEP_NONE) {
+        lockstep_dac (axis, code);
+        return;
+    }
     plant_dev_catch_up ();
     plant_set_code (&robot_plant, axis, code);
     if (plant_unit.flags & UNIT_ATT)
@@ -173,6 +173,10 @@ void plant_dev_dac (int axis, int code)
 
 void plant_dev_run_lines (int lines)
 {
+    if (lockstep_role != LOCKSTEP_NONE) {
+        lockstep_run_lines (lines);
+        return;
+    }
     plant_dev_catch_up ();
     for (int i = 0; i < PLANT_AXES; i++)
         plant_set_run (&robot_plant, i, (lines >> i) & 1);
@@ -180,6 +184,8 @@ void plant_dev_run_lines (int lines)
 
 void plant_dev_gripper_lines (int step, int dir)
 {
+    if (lockstep_role != LOCKSTEP_NONE)
+        return;                                  /* no gripper among the five machines */
     plant_dev_catch_up ();
     gripper_lines (&robot_gripper, clock_time (), step, dir);
 }
@@ -191,6 +197,8 @@ int plant_dev_gripper_contact (void)
 
 uint16 plant_dev_counter (int axis)
 {
+    if (lockstep_role != LOCKSTEP_NONE)
+        return lockstep_counter ();
     plant_dev_catch_up ();
     return plant_counter (&robot_plant, axis);
 }
@@ -244,7 +252,7 @@ static t_stat plant_attach (UNIT *uptr, char *cptr)
         plant_detach (uptr);
     if ((r = device_attach_text (uptr, cptr, "PLANT: cannot write the trace")) != SCPE_OK)
         return r;
-    fprintf (uptr->fileref, "%s\n", plant_dev_columns);
+    fprintf (uptr->fileref, "%s\n", plant_row_columns);
     plant_dev_catch_up ();
     schedule_sample ();
     return SCPE_OK;
@@ -401,7 +409,7 @@ static t_stat plant_show_global (FILE *st, UNIT *uptr, int32 val, void *desc)
 
 static t_stat plant_show_layout (FILE *st, UNIT *uptr, int32 val, void *desc)
 {
-    fprintf (st, "columns %s\n", plant_dev_columns);
+    fprintf (st, "columns %s\n", plant_row_columns);
     for (int i = 0; i < PLANT_AXES; i++)
         fprintf (st, "axis %c %s %.9g %.9g %.9g\n", plant_axis_names[i], plant_unit_name (i),
                  plant_counts_per_unit (i), plant_get_param (&robot_plant, i, P_PMIN),

@@ -7,8 +7,10 @@
    filled at start-up from the stock list: SIMH's CLK (clk_dev, the
    wall-calibrated line clock) is replaced, in its place, by the project's
    KW11-L (kw11l.c, also named CLK); DRV11, AAV11, PLANT, LAB (lab.c,
-   the lab bench's pacing, pause and memory watch) and CUE (prompt_cue.c, the
-   scripted runs' stop at the prompt) are appended.
+   the lab bench's pacing, pause and memory watch), CUE (prompt_cue.c, the
+   scripted runs' stop at the prompt), LOCKSTEP and LINK0-3 (lockstep_dev.c,
+   link_dev.c: the five machines in lock-step, inert until SET LOCKSTEP
+   ROLE) are appended.
    Everything else is SIMH's own, in SIMH's order.
 
    What still refers to the stock clock: pdp11_cpumod.c sets clk_fie,
@@ -71,6 +73,9 @@ static void machine_vm_init (void)
     add_device (&n, &plant_dev);
     add_device (&n, &lab_dev);
     add_device (&n, &cue_dev);
+    add_device (&n, &lockstep_dev);
+    for (int i = 0; i < 4; i++)
+        add_device (&n, &link_dev[i]);
     sim_devices[n] = NULL;
     /* a SET CLK RATE: the plant integrates up to now in the old time; then the
        clock, the plant, the console and the lab keep their events' times */
@@ -78,6 +83,7 @@ static void machine_vm_init (void)
     clock_on_rate_change (&plant_dev_rate_changing, &plant_dev_rate_changed);
     clock_on_rate_change (NULL, &console_pacing_rate_changed);
     clock_on_rate_change (NULL, &lab_rate_changed);
+    clock_on_rate_change (NULL, &lockstep_rate_changed);
     /* the gripper's contact switch is the DRV11's REQ B: the plant, below the
        bus devices, tells the DRV11 through this hook, not by name */
     plant_dev_on_lines_changed (&drv11_lines_changed);

@@ -180,3 +180,39 @@ def test_written_files_get_ordinary_permissions(src, tmp_path):
     mask = os.umask(0)
     os.umask(mask)
     assert image.stat().st_mode & 0o777 == 0o666 & ~mask
+
+
+def test_add_new_fills_only_blank_blocks_and_is_refused_while_held(src, tmp_path):
+    """A working disk made by an older version gets the blocks a newer one ships
+    (blank there, written on the pristine image); a block the user wrote stays his."""
+    import fcntl
+    pristine, work = tmp_path / "pristine.dsk", tmp_path / "work.dsk"
+    assert harness("disk", "pack", src, pristine).returncode == 0
+    (src / "1000.txt").write_text("( my own block 1000 )\n")
+    (src / "0007.txt").unlink()                         # the old version lacked block 7
+    assert harness("disk", "pack", src, work).returncode == 0
+    with open(work, "rb") as held:                      # a simulator writing it: refused
+        fcntl.flock(held, fcntl.LOCK_EX)
+        before = work.read_bytes()
+        assert failed(harness("disk", "add-new", work, "--from", pristine), "in use", "BYE")
+        assert work.read_bytes() == before
+    result = harness("disk", "add-new", work, "--from", pristine)
+    assert result.returncode == 0, result.stderr
+    assert "1 blocks added" in result.stdout and "(7)" in result.stdout
+    data = work.read_bytes()
+    assert data[7 * 1024:7 * 1024 + 9] == b"( seven )"
+    assert data[1000 * 1024:1000 * 1024 + 21] == b"( my own block 1000 )"
+    again = harness("disk", "add-new", work, "--from", pristine)
+    assert again.returncode == 0 and "nothing to add" in again.stdout
+
+
+def test_the_console_names_blocks_the_working_disk_lacks(src, tmp_path):
+    from harness.machine.console_session import missing_blocks_note
+    pristine, work = tmp_path / "pristine.dsk", tmp_path / "work.dsk"
+    assert harness("disk", "pack", src, pristine).returncode == 0
+    assert missing_blocks_note(pristine, pristine) is None
+    (src / "0007.txt").unlink()
+    (src / "10239.txt").unlink()
+    assert harness("disk", "pack", src, work).returncode == 0
+    note = missing_blocks_note(work, pristine)
+    assert "lacks blocks 7, 10239" in note and "disk add-new" in note

@@ -128,6 +128,19 @@ def test_stack_underflow_names_the_word(forth, line, word):
     still_works(forth)
 
 
+@pytest.mark.parametrize("setup, line, answer", [
+    (": peek 160000O @ ;", "7 8 ' peek CATCH . . .", "-256 8 7 "),   # a bus error
+    (": deeper 1 2 3 160000O @ ;", "9 ' deeper CATCH . .", "-256 9 "),
+    (": under1 SWAP ;", "3 ' under1 CATCH . .", "-4 3 "),           # the MMU abort
+])
+def test_a_caught_trap_leaves_the_cells_under_the_catch_frame(forth, setup, line, answer):
+    """The trap handler pushed its code at S0, over the bottom cells of the data
+    stack that CATCH gives back (found by the 11/03's link words, issue 21)."""
+    forth.send(setup)
+    assert forth.send(line) == answer
+    still_works(forth)
+
+
 # ---- 10, 11: EXECUTE of data, stores into the kernel's vectors -----------------------
 @pytest.mark.parametrize("line, message, word", [
     ("VARIABLE v  v EXECUTE", "not an execution token", "EXECUTE"),

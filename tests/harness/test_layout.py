@@ -9,7 +9,7 @@ from pathlib import Path
 HARNESS = Path(__file__).resolve().parents[2] / "harness"
 
 # the import order, bottom first; a package may import only packages of a lower rank
-RANK = {"blocks": 0, "machine": 1, "analysis": 2, "lab": 2,
+RANK = {"blocks": 0, "machine": 1, "analysis": 2, "lab": 2, "controllers": 2,
         "commands": 3, "bench": 4, "fuzz": 4, "soak": 4, "figures": 4, "cli": 4,
         "__main__": 5}
 
@@ -231,7 +231,7 @@ def test_every_package_has_its_line_in_the_readme():
     assert named == set(RANK), sorted(named ^ set(RANK))
 
 
-DEVICE_KINDS = ("bus", "plant", "lab", "simh")    # pdp11-devices/, one folder per kind
+DEVICE_KINDS = ("bus", "plant", "lab", "simh", "lockstep")    # pdp11-devices/, one folder per kind
 
 
 def test_the_devices_are_sorted_by_kind():

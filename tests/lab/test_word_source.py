@@ -44,7 +44,11 @@ def test_the_definition_whose_neighbours_match_the_dictionarys_is_taken():
 
 def test_the_printed_blocks_place_their_words(tmp_path):
     pane = ProgramPane(PRISTINE_DISK)
-    assert pane.where_defined("Velocity") == {"word": "Velocity", "block": 1000, "line": 4}
+    # its neighbours in the dictionary after 1000 LOAD, as the server passes them:
+    # block 1080 (an 11/03's servo) defines a Velocity too
+    assert pane.where_defined("Velocity", ["MaxVel", "State", "Desire.Pos"],
+                              ["Increment", "0-Vel", "Command.Status"]) == \
+        {"word": "Velocity", "block": 1000, "line": 4}
     assert pane.where_defined("Interrupt.Servo", ["Change.Speed?"], ["Install.Int.Servo"]) == \
         {"word": "Interrupt.Servo", "block": 1008, "line": 1}
     assert pane.where_defined("EMIT") is None and pane.where_defined(None) is None

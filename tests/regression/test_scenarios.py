@@ -4,6 +4,7 @@ Goldens: `make regression-update` rewrites them and prints what changed."""
 import pytest
 
 from harness.analysis import regression
+from harness.controllers.scripted import run_five_file
 from tests.run.common import needs_build
 
 pytestmark = needs_build
@@ -14,7 +15,7 @@ def test_scenario(scenario, tmp_path):
     reason = regression.skip_reason(scenario)
     if reason:
         pytest.skip(reason)
-    outcome = regression.run(scenario, tmp_path)
+    outcome = regression.run(scenario, tmp_path, five_runner=run_five_file)
     problems = regression.problems(scenario, outcome)
     assert not problems, f"{scenario.name}:\n" + "\n".join(problems)
 

@@ -1,0 +1,51 @@
+/* quantum.h: what the lock-step coordinator does at each boundary, as pure
+   logic (no sockets; tests/controllers/lockstep_test.c): the one plant,
+   stepped here only, and the links' crossing.
+
+   ls_world_step(w, k, ups, events, downs): the members' events of quantum k
+   (ups[m] NULL for a member not live) are applied to the plant in time
+   order (equal times: member order, then each member's own order), trace
+   rows interleaved (a row for the axis at every DAC write, rows for all
+   four axes at every sample time i / sample_hz, as the PLANT device
+   writes them); the plant is integrated to the boundary k / quanta_per_s;
+   each live member's ls_down gets the plant, what its link peers did, and
+   the lost 11/03s (expected, no longer live: for the 11/23) or LS_END (for an 11/03 whose 11/23 is
+   gone). An event for an axis other than the member's own is ignored: an
+   11/03 drives only its axis, the 11/23 none. */
+#ifndef QUANTUM_H
+#define QUANTUM_H
+
+#include <stdio.h>
+
+#include "gripper.h"
+#include "lockstep_wire.h"
+
+#define LS_HISTORY 8                    /* link words kept per axis and direction */
+
+typedef struct {                        /* the last words that crossed one way */
+    uint16_t word[LS_HISTORY];
+    uint64_t quantum[LS_HISTORY];
+    int n;                              /* words ever; the newest at (n - 1) % LS_HISTORY */
+} ls_history;
+
+typedef struct {
+    plant pl;
+    gripper gr;                 /* not driven in this mode; its columns stay in the row */
+    FILE *trace;                /* NULL: no trace */
+    int sample_hz;              /* 0: rows at DAC writes only */
+    uint64_t samples;           /* sample rows written */
+    int quanta_per_s;
+    uint32_t expected;          /* bit m: member m is one of this session's */
+    uint32_t live;              /* bit m: member m takes part (expected, not lost) */
+    ls_history to_axis[LS_LINKS], to_main[LS_LINKS];   /* for the status (lab page) */
+} ls_world;
+
+void ls_world_init (ls_world *w, uint64_t seed, int sample_hz, FILE *trace);
+/* The status after quantum k, one JSON object (the lab page's view of the five
+   machines): time, each member taking part or lost, per axis the plant's state
+   and the words that last crossed its link each way, with their quanta. */
+void ls_world_status (FILE *f, const ls_world *w, uint64_t k);
+void ls_world_step (ls_world *w, uint64_t k, const ls_up *const ups[LS_MEMBERS],
+                    const ls_event *const events[LS_MEMBERS], ls_down downs[LS_MEMBERS]);
+
+#endif
