@@ -49,7 +49,7 @@ SETTABLE = {   # device: (its modifiers in table order, those the page may set)
     "PLANT": (("X", "Y", "Z", "T", "KV", "TAU", "AMAX", "VMAX", "OFFSET", "PMIN", "PMAX",
                "WALK", "POS", "GRIPPER", "OBJECT", "PULLOUT", "OPENING", "PARTX", "PARTY",
                "PARTZ", "SEED", "SAMPLE", "POWER", "HINT"), None),     # None: all
-    "CLK": (("RATE", "REALTIME", "NOREALTIME", "TIMED", "NOTIMED"), None),
+    "CLK": (("RATE", "REALTIME", "NOREALTIME", "IDLESPEED", "TIMED", "NOTIMED"), None),
     "LAB": (("SPEED", "IOBREAK", "NOIOBREAK"), None),
 }
 # Devices whose units SIMH backs with host files (disks, tapes, paper tape, cards,

@@ -43,6 +43,10 @@
        idle prompt passes at the real pace and costs the host little while
        busy stretches run at full speed. (SIMH's own sim_idle needs a
        wall-calibrated timer, which this clock never is.)
+     SET CLK IDLESPEED=X (1..1000, default 1): those idle ticks pass at X times
+       the real pace. The harness's pty machine (harness/machine/machine.py)
+       uses 100: an idle prompt there would otherwise race simulated time (about
+       700 times the real pace) and keep a host core busy between two lines.
    Without either (scripted runs) WAIT costs one count per simulated
    instruction time, as in stock SIMH. */
 #include "devices.h"
@@ -62,6 +66,8 @@ static int32 lks;
 static int32 tick_acc;                  /* remainder of the exact tick series */
 static uint32 ticks;                    /* ticks since power-up */
 static int realtime;                    /* SET CLK REALTIME */
+static int32 idle_speed = 1;            /* SET CLK IDLESPEED: idle ticks' pace */
+#define IDLE_SPEED_MAX 1000
 static wall_pacer pacer;                 /* wall_pacer.c */
 #define PACE_SLACK_S 0.1                /* further behind: take a new reference */
 
@@ -73,6 +79,31 @@ static t_stat kwl_set_rate (UNIT *uptr, int32 val, char *cptr, void *desc);
 static t_stat kwl_show_rate (FILE *st, UNIT *uptr, int32 val, void *desc);
 static t_stat kwl_show_state (FILE *st, UNIT *uptr, int32 val, void *desc);
 static t_stat kwl_set_realtime (UNIT *uptr, int32 val, char *cptr, void *desc);
+static t_stat kwl_set_idle_speed (UNIT *uptr, int32 val, char *cptr, void *desc);
+static t_stat kwl_show_idle_speed (FILE *st, UNIT *uptr, int32 val, void *desc);
+static t_stat kwl_set_idle_speed (UNIT *uptr, int32 val, char *cptr, void *desc)
+{
+    char *end;
+    long x;
+    if (cptr == NULL || *cptr == 0)
+        return SCPE_MISVAL;
+    x = strtol (cptr, &end, 10);
+    if (*end != 0 || x < 1 || x > IDLE_SPEED_MAX) {
+        printf ("IDLESPEED must be a whole number from 1 to %d (times the real pace)\n",
+                IDLE_SPEED_MAX);
+        return SCPE_ARG;
+    }
+    idle_speed = (int32) x;
+    wall_pacer_drop (&pacer);
+    return SCPE_OK;
+}
+
+static t_stat kwl_show_idle_speed (FILE *st, UNIT *uptr, int32 val, void *desc)
+{
+    fprintf (st, "idlespeed=%d\n", idle_speed);      /* MTAB_NMO: SIMH ends no line */
+    return SCPE_OK;
+}
+
 static t_stat kwl_set_timed (UNIT *uptr, int32 val, char *cptr, void *desc);
 
 static DIB kwl_dib = {
@@ -97,6 +128,8 @@ static MTAB kwl_mod[] = {
     { MTAB_XTD|MTAB_VDV, 0, "STATE", NULL, NULL, &kwl_show_state, NULL },
     { MTAB_XTD|MTAB_VDV, 1, NULL, "REALTIME", &kwl_set_realtime, NULL, NULL },
     { MTAB_XTD|MTAB_VDV, 0, NULL, "NOREALTIME", &kwl_set_realtime, NULL, NULL },
+    { MTAB_XTD|MTAB_VDV|MTAB_NMO, 0, "IDLESPEED", "IDLESPEED", &kwl_set_idle_speed,
+      &kwl_show_idle_speed, NULL },
     { MTAB_XTD|MTAB_VDV, 1, NULL, "TIMED", &kwl_set_timed, NULL, NULL },
     { MTAB_XTD|MTAB_VDV, 0, NULL, "NOTIMED", &kwl_set_timed, NULL, NULL },
     { MTAB_XTD|MTAB_VDV, 0, "ADDRESS", NULL, NULL, &show_addr, NULL },
@@ -133,8 +166,10 @@ static t_stat kwl_wr (int32 data, int32 PA, int32 access)
 /* At a tick: sleep while simulated time is ahead of the host's (see above). */
 static void pace (void)
 {
-    if (realtime || (sim_idle_enab && wait_state))
+    if (realtime)
         wall_pacer_pace (&pacer, 1.0, PACE_SLACK_S);
+    else if (sim_idle_enab && wait_state)
+        wall_pacer_pace (&pacer, (double) idle_speed, PACE_SLACK_S);
     else
         wall_pacer_drop (&pacer);
 }

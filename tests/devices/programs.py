@@ -44,6 +44,16 @@ def clock_counter(enable=True):
     return p
 
 
+def idle_clock_counter():
+    """Count clock interrupts at 2000, WAITing between them (as the FORTH's KEY does)."""
+    p = Program()
+    p.mov_imm(0o100, LKS)
+    p.op("WAIT", 0o000001)
+    p.op(f"BR {p.here - 2:o}", 0o000776)
+    p.handler(0o100, 0o1400, lambda h: h.inc_abs(R[0]))
+    return p
+
+
 def drv_bits():
     p = Program()
     p.mov_imm(0o177777, DRV_CSR).mov_abs(DRV_CSR, R[0])   # 143: select, IE A/B
@@ -170,6 +180,7 @@ def gripper_steps(count, close, spacing):
 def all_programs():
     return {
         "lks_bits": lks_bits(), "clock_counter": clock_counter(),
+        "idle_clock_counter": idle_clock_counter(),
         "drv_bits": drv_bits(), "drv_interrupts": drv_interrupts(0o140),
         "aav_bits": aav_bits(), "dac_step": dac_step([0o4144, 0o4144, 0o4144, 0o4144], 0o17),
         "counter_wrap": counter_wrap(), "rl_write_read": rl_write_read(),

@@ -1,5 +1,7 @@
 """KW11-L line clock (CLK): register bits, INIT, exactly 60 ticks per simulated
 second, interrupts at vector 100 only with IE set and priority below 6."""
+import time
+
 import pytest
 
 from programs import examine_results, results
@@ -79,3 +81,29 @@ def test_realtime_is_shown_and_can_be_ended():
     shows = [line for line in out.splitlines() if line.startswith("CLK, rate=")]
     assert [", realtime" in line for line in shows] == [True, False, False]
     assert "Non-existent parameter" in out or "Invalid argument" in out
+
+
+def idle_ticks(extra=""):
+    """A program that WAITs between clock interrupts (the FORTH's idle KEY): its count of
+    ticks after one simulated second, and the wall seconds the run took."""
+    prog = programs.idle_clock_counter()
+    start = time.monotonic()
+    out = simh.run(extra + prog.script(start=False) + f"step {RATE + 2500}\n" + examine_results(1))
+    assert "Step expired" in out and "Non-existent" not in out and "Invalid" not in out, out
+    return results(out, 1)[0], time.monotonic() - start
+
+
+def test_idle_speed_paces_waits_and_changes_no_count():
+    """SET CLK IDLESPEED=4 under SET CPU IDLE: a second of WAITs takes a quarter of a
+    wall second at least (the clock sleeps the host), and the same 60 interrupts come."""
+    plain, _ = idle_ticks()
+    paced, wall = idle_ticks("set cpu idle\nset clk idlespeed=4\n")
+    assert plain == paced == 60
+    assert wall >= 0.2
+
+
+def test_idle_speed_is_shown_and_bad_values_are_refused():
+    out = simh.run("set clk idlespeed=100\nshow clk idlespeed\nset clk idlespeed=0\n"
+                   "set clk idlespeed=1001\nset clk idlespeed=5x\nshow clk idlespeed\n")
+    assert out.count("Invalid argument") == 3
+    assert out.splitlines().count("idlespeed=100") == 2      # SHOW, before and after

@@ -1,5 +1,6 @@
-"""Lab tests: a lab server per module (python -m harness lab, at full speed, on a copy
-of the pristine disk, on a free port) and one headless Chromium for the session."""
+"""Lab tests: a lab server per module (python -m harness lab, at ten times the 11/23's
+pace, on a copy of the pristine disk, on a free port) and one headless Chromium for the
+session."""
 import pytest
 
 from harness.lab.launch import CHROMEDRIVER, CHROMIUM, LabProcess, have_browser, \
@@ -9,10 +10,10 @@ from labpage import ARTIFACTS
 
 @pytest.fixture(scope="module")
 def lab_server(request, tmp_path_factory):
-    """A lab server for the module, at the module's LAB_SPEED (default full);
+    """A lab server for the module, at the module's LAB_SPEED (default LabProcess's, x10);
     stopped with ^C unless a test ended it (BYE)."""
-    speed = getattr(request.module, "LAB_SPEED", "full")
-    server = LabProcess(tmp_path_factory.mktemp("lab"), speed=speed)
+    speed = getattr(request.module, "LAB_SPEED", None)
+    server = LabProcess(tmp_path_factory.mktemp("lab"), **({"speed": speed} if speed else {}))
     yield server
     status = server.stop()
     assert status == 0, f"the lab exited with {status}:\n{server.text()}"

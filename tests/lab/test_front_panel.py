@@ -9,6 +9,10 @@ from harness.lab.dictionary import Memory
 from harness.lab.front_panel import WordIndex, decode_psw, panel
 from test_sim_prompt_server import session
 
+# full speed: the I/O breakpoint's test waits for a second of 60 interrupts a second
+# and the dictionary read that follows (x10 timed out there)
+LAB_SPEED = "full"
+
 
 def test_psw_fields():
     assert decode_psw(0o340) == {"mode": "kernel", "priority": 7, "T": 0,

@@ -34,7 +34,7 @@ async def page_session(server, steps):
 
 @contextlib.contextmanager
 def lab(tmp_path):
-    """A lab at full speed on a fresh disk; killed if a failing test leaves it running."""
+    """A lab (x10, LabProcess's) on a fresh disk; killed if a failing test leaves it running."""
     server = LabProcess(tmp_path)
     try:
         yield server
