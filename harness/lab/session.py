@@ -90,6 +90,7 @@ class Simulator:
         self.guard = SimPromptGuard(self.watcher)     # the page's keys pass through it
         self.prompted = asyncio.Event()              # SIMH printed its prompt (simh_lines)
         self.capture = None                          # what SIMH prints, while simh_lines reads it
+        self.simh_turn = asyncio.Lock()              # one simh_lines at a time: they share it
         self._tail = b""
         self.child = None
         self.fds = {}
@@ -228,7 +229,13 @@ class Simulator:
         answered while paused, when a ^E would wait for Run), or, with stop False,
         after SIMH's prompt comes by itself (a breakpoint was reported); a line
         that runs the machine (CONT) ends the list, but for STEP, which comes back
-        to sim>. What SIMH printed for the last line answered at its prompt."""
+        to sim>. What SIMH printed for the last line answered at its prompt.
+        Calls take turns (a step pressed while a breakpoint's history is read):
+        each has SIMH's prompt and the capture to itself."""
+        async with self.simh_turn:
+            return await self._simh_lines(lines, wait_s, stop)
+
+    async def _simh_lines(self, lines, wait_s, stop):
         if self.leaving or self.child is None:
             return ""
         if not self.watcher.at_simh:

@@ -141,6 +141,10 @@ def test_an_io_breakpoint_and_instruction_steps_from_the_page(lab_server):
             stepped = await until_message(page, lambda m: m["t"] == "data" and m["panel"] and
                                           m["panel"]["registers"][7]["value"] not in pcs)
             pcs.append(stepped["panel"]["registers"][7]["value"])
+        mark = len(page.screen)                              # Step pressed twice at once:
+        await page.ws.send_str(json.dumps({"t": "stepi"}))   # the two take turns at sim>
+        await page.ws.send_str(json.dumps({"t": "stepi"}))
+        await page.until(r"Step expired[\s\S]*Step expired", mark)
         await page.ws.send_str(json.dumps({"t": "nobreak"}))
         await page.until(r"set lab noiobreak[\s\S]*cont", start)
         mark = len(page.screen)
@@ -158,4 +162,4 @@ def test_an_io_breakpoint_and_instruction_steps_from_the_page(lab_server):
     assert "170440" in last[2] and last[3] == "Interrupt.Servo"
     assert history["where"] == {"word": "Interrupt.Servo", "block": 1008, "line": 1,
                                 "pc": last[0]}
-    assert len(pcs) == 2 and said.count("Step expired") == 2
+    assert len(pcs) == 2 and said.count("Step expired") == 4
