@@ -5,28 +5,11 @@ robot tests. Without a multiplexer select the ordinary DRV11 reads x's counter
 and D/A channel 0 drives x, so this 11/03 servos the plant's x axis."""
 import pytest
 
-from harness.machine.build import CPU_1103, KERNEL_1103, KERNEL_MAP, PDP11, PRISTINE_DISK
-from harness.machine.build import fresh_disk
-from harness.machine.robot import Robot
+from harness.machine.build import CPU_1103, KERNEL_1103
+from tests.booted_robots import booted_robots
 
 
 @pytest.fixture
 def lsi11(tmp_path):
     """lsi11(trace=False) -> a Robot: the 11/03 kernel on a fresh disk."""
-    for need in (KERNEL_1103, KERNEL_MAP, PDP11, PRISTINE_DISK):
-        if not need.exists():
-            pytest.fail(f"build first: {need} (make)")
-    machines = []
-
-    def start(trace=False):
-        disk = fresh_disk(tmp_path, f"rl0-{len(machines)}.dsk")
-        path = tmp_path / f"trace-{len(machines)}.csv" if trace else None
-        m = Robot(disk=disk, trace=path, kernel=KERNEL_1103, settings=CPU_1103,
-                  timeout=20)
-        m.trace_path = path
-        machines.append(m)
-        return m
-
-    yield start
-    for m in machines:
-        m.close()
+    yield from booted_robots(tmp_path, KERNEL_1103, settings=CPU_1103)

@@ -2,15 +2,13 @@
 (DIR bit 5), the finger contact switch on the CSR's REQ B, SET PLANT GRIPPER,
 SHOW PLANT and the trace's last three columns (pdp11-devices/plant/gripper.h)."""
 import csv
-import subprocess
-from pathlib import Path
 
 from programs import examine_results, results
 from harness.machine import simh
 from harness.machine.plant_rows import parse_show_gripper
 import programs
+from tests.c_unit import passes
 
-GRIPPER_TEST = Path(__file__).resolve().parents[2] / "build" / "gripper_test"
 REQB = 0o100000
 
 
@@ -21,9 +19,7 @@ def run_steps(count, close, spacing, settings=""):
 
 
 def test_gripper_mechanics_unit_tests():
-    proc = subprocess.run([str(GRIPPER_TEST)], capture_output=True, text=True, timeout=30)
-    assert proc.returncode == 0, proc.stdout + proc.stderr
-    assert proc.stdout.rstrip().endswith("checks, 0 failed")
+    assert passes("gripper_test")
 
 
 def test_slow_pulses_close_the_fingers_step_by_step():

@@ -2,9 +2,8 @@
 driven in lock-step with simulated time (harness/machine/robot.py)."""
 import pytest
 
-from harness.machine.build import KERNEL, KERNEL_MAP as MAP, PDP11 as SIMULATOR, fresh_disk
-from harness.machine.build import PRISTINE_DISK as DISK
-from harness.machine.robot import Robot
+from harness.machine.build import KERNEL
+from tests.booted_robots import booted_robots
 
 # Helpers typed at the prompt (not in the blocks): print the four counters,
 # the four cells of one of the appendix's arrays, and (with the servo's clock
@@ -17,22 +16,7 @@ HELPERS = (": .C ( -- ) 4 0 DO I Read.Counter . LOOP ;",
 @pytest.fixture
 def boot(tmp_path):
     """boot(trace=False) -> a Robot on a fresh copy of build/robot.dsk."""
-    for need in (KERNEL, SIMULATOR, DISK, MAP):
-        if not need.exists():
-            pytest.fail(f"build first: {need} (make)")
-    robots = []
-
-    def start(trace=False):
-        disk = fresh_disk(tmp_path, f"rl0-{len(robots)}.dsk")
-        path = tmp_path / f"trace-{len(robots)}.csv" if trace else None
-        r = Robot(disk=disk, trace=path, timeout=20)  # a hung line fails fast
-        r.trace_path = path
-        robots.append(r)
-        return r
-
-    yield start
-    for r in robots:
-        r.close()
+    yield from booted_robots(tmp_path, KERNEL)
 
 
 @pytest.fixture
