@@ -50,7 +50,7 @@ void plant_dev_rate_changing (int32 old_rate);    /* integrate up to now, old ti
 void plant_dev_rate_changed (int32 old_rate);     /* pending samples keep their times */
 void plant_dev_command_done (void);               /* after each SCP command */
 void rack_hint_enable (int on);                   /* SET PLANT HINT (rack_hint.c) */
-void rack_hint_dac (int axis, int code);          /* at each DAC write */
+void rack_hint_dac (int axis, int code, int powered, double from_zero);  /* at each DAC write */
 
 /* Lock-step (simh/lockstep_dev.c): the role of this machine among the five, and
    the plant glue's way to it while a role is set; the links (bus/link_dev.c). */

@@ -168,7 +168,8 @@ void plant_dev_dac (int axis, int code)
     plant_set_code (&robot_plant, axis, code);
     if (plant_unit.flags & UNIT_ATT)
         trace_row (axis);
-    rack_hint_dac (axis, code);
+    rack_hint_dac (axis, code, robot_plant.power,
+                   code - 2048 - plant_offset (&robot_plant, axis));
 }
 
 void plant_dev_run_lines (int lines)

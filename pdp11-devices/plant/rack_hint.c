@@ -39,15 +39,18 @@ void rack_hint_enable (int on)
     rest ();
 }
 
-void rack_hint_dac (int axis, int code)
+/* At a DAC write of `code` on `axis`: `powered` the rack's switch, `from_zero` the
+   code's distance from the axis's zero (its amplifier's offset included); the
+   plant device passes both, so this file needs nothing of it. */
+void rack_hint_dac (int axis, int code, int powered, double from_zero)
 {
     static const char names[] = "XYZT";
     int active = 0;
-    if (!enabled || plant_dev_powered ()) {
+    if (!enabled || powered) {
         rest ();
         return;
     }
-    if (fabs (code - 2048 - plant_offset (&robot_plant, axis)) < HINT_CODES)
+    if (fabs (from_zero) < HINT_CODES)
         since[axis] = -1;
     else if (since[axis] < 0)
         since[axis] = clock_time ();
