@@ -17,6 +17,7 @@ from pathlib import Path
 import pexpect
 
 from harness.analysis import regression
+from harness.controllers.scripted import run_five_file
 from harness.machine.build import PDP11, ROOT, fresh_disk
 from harness.machine.script import parse
 from harness.machine.script_run import run_steps
@@ -39,7 +40,8 @@ def one_scenario(name="boot"):
 
 def whole_suite():
     with tempfile.TemporaryDirectory() as tmp:
-        wall, _ = timed(lambda: [regression.run(s, tmp) for s in regression.scenarios()
+        wall, _ = timed(lambda: [regression.run(s, tmp, five_runner=run_five_file)
+                                 for s in regression.scenarios()
                                  if not regression.skip_reason(s)])
     ran = sum(1 for s in regression.scenarios() if not regression.skip_reason(s))
     return wall, ran, len(regression.scenarios())
