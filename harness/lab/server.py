@@ -189,12 +189,22 @@ class Lab:
     def broadcast(self, message):
         text = json.dumps(message)
         for ws in list(self.pages):
-            if not ws.closed:
-                asyncio.ensure_future(ws.send_str(text))
+            self.send_later(ws, text)
 
     def tell(self, ws, message):
+        self.send_later(ws, json.dumps(message))
+
+    @staticmethod
+    def send_later(ws, text):
+        """Queue a frame to one page. A page that closes between the check and the
+        write is not an error: its socket's handler forgets it on the way out."""
+        async def send():
+            try:
+                await ws.send_str(text)
+            except ConnectionError:        # aiohttp's ClientConnectionResetError is one
+                pass
         if not ws.closed:
-            asyncio.ensure_future(ws.send_str(json.dumps(message)))
+            asyncio.ensure_future(send())
 
     def hello(self, ws):
         return {"t": "hello", "stops": self.sim.stops, "plant": self.sim.plant.message(),
@@ -406,14 +416,16 @@ def make_app(lab, token, port_of):
         await ws.prepare(request)
         lab.opened += 1
         lab.pages[ws] = f"page {lab.opened}"
-        await ws.send_str(json.dumps(lab.hello(ws)))
-        lab.sent = None                   # the next frame brings it the servo's words
         try:
+            await ws.send_str(json.dumps(lab.hello(ws)))
+            lab.sent = None               # the next frame brings it the servo's words
             async for msg in ws:
                 if msg.type == WSMsgType.TEXT:
                     lab.on_text(ws, msg.data)
                 elif msg.type == WSMsgType.BINARY:
                     lab.tell(ws, {"t": "error", "why": "binary messages are not the lab's"})
+        except ConnectionError:           # the page left before its hello went out
+            pass
         finally:
             lab.pages.pop(ws, None)
             lab.listings.forget(ws)
