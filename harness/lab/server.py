@@ -49,6 +49,7 @@ TICKS_PER_FRAME = 100            # changes of the watched words per frame (word_
 SCROLLBACK = 1 << 17
 SHELL = "the shell"
 TAKE_KEY = b"\x14"               # ^T in the shell: take the keyboard
+SEND_WAIT_S = 2.0                # leaving: at most this long for the last frames to go
 
 
 class Lab:
@@ -82,6 +83,7 @@ class Lab:
         self.sent = None                 # the status and servo words the pages last had
         self.done = asyncio.Event()
         self.safe = None
+        self.sending = set()             # frames queued to pages, not yet written
 
     # ---- from the simulator ---------------------------------------------------------
     def on_console(self, data):
@@ -194,8 +196,7 @@ class Lab:
     def tell(self, ws, message):
         self.send_later(ws, json.dumps(message))
 
-    @staticmethod
-    def send_later(ws, text):
+    def send_later(self, ws, text):
         """Queue a frame to one page. A page that closes between the check and the
         write is not an error: its socket's handler forgets it on the way out."""
         async def send():
@@ -204,7 +205,15 @@ class Lab:
             except ConnectionError:        # aiohttp's ClientConnectionResetError is one
                 pass
         if not ws.closed:
-            asyncio.ensure_future(send())
+            task = asyncio.ensure_future(send())
+            self.sending.add(task)
+            task.add_done_callback(self.sending.discard)
+
+    async def sent_all(self, timeout=SEND_WAIT_S):
+        """Wait until every frame queued so far is written (the last report, `ended`),
+        at most `timeout` seconds (a page that does not read)."""
+        if self.sending:
+            await asyncio.wait(set(self.sending), timeout=timeout)
 
     def hello(self, ws):
         return {"t": "hello", "stops": self.sim.stops, "plant": self.sim.plant.message(),
@@ -465,7 +474,7 @@ async def serve(simulator, disk, symbols, port, speed, announce, read_only=False
         loop.add_signal_handler(signal.SIGHUP, lambda: (quiet_stdout(),
                                                         asyncio.ensure_future(lab.sim.close())))
         await lab.done.wait()
-        await asyncio.sleep(0.2)                  # the last messages reach the pages
+        await lab.sent_all()                      # the last messages reach the pages
     finally:
         for task in tasks:
             task.cancel()

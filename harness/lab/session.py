@@ -18,6 +18,7 @@ import os
 import shutil
 import sys
 import tempfile
+import time
 from pathlib import Path
 
 import pexpect
@@ -25,7 +26,7 @@ import pexpect
 from harness.lab.feed import Lines, lab_row
 from harness.lab.sim_prompt_guard import SimPromptGuard, prompt_termios
 from harness.lab.protocol import device_command
-from harness.machine import plant_rows, simh
+from harness.machine import plant_rows, pty_child, simh
 from harness.machine.build import KERNEL, ROOT
 from harness.machine.console_session import (RACK_OFF, bye_halt, leave, say,
                                              simh_exit_report)
@@ -37,6 +38,7 @@ SPEEDS = {"real": 1, "x10": 10, "full": 0}
 READ_CHUNK = 1 << 16
 QUEUE_LIMIT = 1 << 16        # characters waiting for the simulator; the pages send within it
 PUMP_S = 0.005               # how often waiting keys are offered to the pty
+EXIT_WAIT_S = 0.1            # for a simulator that has quit, before its pty is closed
 TMP_PREFIX = "lab-"
 
 
@@ -61,6 +63,18 @@ def _alive(pid):
         return False
     except PermissionError:
         return True
+    return True
+
+
+def exited(child, wait_s=EXIT_WAIT_S):
+    """Whether `child` has exited, waiting at most wait_s for one that is on its way
+    (its pty closed a moment before the kernel reaps it): pexpect's close would
+    sleep that long anyway, and kills what still runs after it."""
+    deadline = time.monotonic() + wait_s
+    while child.isalive():
+        if time.monotonic() > deadline:
+            return False
+        time.sleep(0.002)
     return True
 
 
@@ -333,7 +347,8 @@ class Simulator:
         for name in list(self.fds):
             self._unwatch(name)
         os.close(self.ctl)
-        self.child.close(force=True)
+        exited(self.child)
+        pty_child.close(self.child)       # no fixed pause for a simulator that has quit
         self.tmp.cleanup()
 
     def _leave(self, how, echo, page, left):

@@ -81,8 +81,9 @@ def projector(page, width, height):
 def assert_on_screen(page, width, height, panels, buttons="header button"):
     """After a relayout: nothing scrolls, each panel is sizeable and inside the window,
     and no button of `buttons` (a CSS selector) is cut off at the right."""
-    page.execute_script("window.dispatchEvent(new Event('resize'))")
-    page.execute_script("return new Promise(r => setTimeout(r, 300))")
+    drawn = page.execute_script("window.dispatchEvent(new Event('resize'));"
+                                "return window.lab.frames || 0")
+    wait_for("the page drawn again after the relayout", lambda: js(page, "window.lab.frames") > drawn)
     scroll = js(page, "[document.documentElement.scrollWidth, document.documentElement.scrollHeight]")
     assert scroll[0] <= width and scroll[1] <= height, scroll
     for panel in panels:

@@ -184,6 +184,8 @@ def test_the_page_fits_both_projectors_without_scrolling(page, width, height):
         if js(page, "window.lab.status.state") == "pause":     # the move test paused it
             click(page, "#pause")                              # Run
             wait_for("the run", lambda: js(page, "window.lab.status.state") == "run")
+        click(page, '#speeds button[data-speed="x10"]')   # the move test chose real pace
+        wait_for("x10", lambda: js(page, "window.lab.status.speed") == "x10")
         type_line(page, "3200 -2400 400 0 Abs.Move")
         wait_for("the move", lambda: js(page, "window.lab.latest[0][6]") > 3000)
     with projector(page, width, height):

@@ -132,7 +132,8 @@ def test_an_io_breakpoint_and_instruction_steps_from_the_page(lab_server):
         await page.until(r"not set: IOBREAK: no device answers at 170460[\s\S]*cont", start)
         ticking = await until_message(page, lambda m: m["t"] == "data" and m["panel"] and any(
             v["vector"] == "100" and v["per_s"] == 60.0 for v in m["panel"].get("interrupts", [])))
-        await asyncio.sleep(1.5)                             # the lab reads the dictionary
+        await until_message(page, lambda m: m["t"] == "data" and "Desire.Pos" in m["servo"])
+        # the lab has read the loaded dictionary (the servo's words are found in it)
         await page.ws.send_str(json.dumps({"t": "iobreak", "address": "170440"}))
         history = await until_message(page, lambda m: m["t"] == "history")
         pcs = []

@@ -15,6 +15,7 @@ from harness.lab.launch import LabProcess
 from harness.lab.page_client import Page
 from harness.lab.protocol import MAX_KEYS
 from harness.lab.session import remove_stale
+from harness.machine import pty_child
 from harness.machine.build import ROOT, fresh_disk
 from tests.run.common import outlived
 
@@ -58,6 +59,15 @@ def lab_in_a_terminal(tmp_path):
     return child, disk
 
 
+def exit_status(child, timeout=30):
+    """The lab on a terminal has printed its last line: its exit status, the pty
+    closed without pexpect's fixed pause (pty_child.close)."""
+    child.expect(pexpect.EOF, timeout=timeout)
+    child.wait()
+    pty_child.close(child)
+    return child.exitstatus
+
+
 def test_the_shell_that_runs_the_lab_is_a_console_too(tmp_path):
     """On a terminal, the lab's shell types to the same FORTH as the page and shows
     what it prints; BYE typed there leaves as in make run (FLUSH, detach, exit 0)."""
@@ -66,9 +76,7 @@ def test_the_shell_that_runs_the_lab_is_a_console_too(tmp_path):
     child.expect(r"2 3 \+ \. 5  ok")
     child.send("BYE\r")
     child.expect("FLUSH answered ok")
-    child.expect(pexpect.EOF)
-    child.close()
-    assert child.exitstatus == 0
+    assert exit_status(child) == 0
 
 
 def test_the_shell_keeps_the_full_simh_console(tmp_path):
@@ -87,9 +95,7 @@ def test_the_shell_keeps_the_full_simh_console(tmp_path):
             break
     child.send("BYE\r")
     child.expect("FLUSH answered ok")
-    child.expect(pexpect.EOF)
-    child.close()
-    assert child.exitstatus == 0
+    assert exit_status(child) == 0
 
 
 def test_closing_the_shells_terminal_leaves_with_flush(tmp_path):
@@ -112,7 +118,7 @@ def test_a_paste_into_the_shell_arrives_whole(tmp_path):
     child.expect(f"{expected(n)}  ok")
     assert "Error" not in child.before
     child.send("BYE\r")
-    child.expect(pexpect.EOF, timeout=60)
+    assert exit_status(child, timeout=60) == 0
 
 
 def test_sigterm_during_a_large_paste_flushes_and_exits_within_10_s(tmp_path):
@@ -161,7 +167,5 @@ def test_quit_edited_at_sim_in_the_shell_writes_the_block_first(tmp_path):
     child.expect("sim> ")
     child.send("xyz \x17quit\r")
     child.expect(r"QUIT: the FORTH's UPDATEd block\(s\) 300 were written to [^\r\n]* first")
-    child.expect(pexpect.EOF)
-    child.close()
-    assert child.exitstatus == 0
+    assert exit_status(child) == 0
     assert disk.read_bytes()[300 * 1024:301 * 1024] == b"Z" * 1024

@@ -30,9 +30,9 @@ class Socket:
 
 
 def test_a_frame_to_a_page_that_is_closing_is_dropped_quietly():
-    lab = Lab.__new__(Lab)                       # only the page list is needed here
+    lab = Lab.__new__(Lab)                # only the page list and the queued frames are needed
     gone, open_page = ClosingSocket(), Socket()
-    lab.pages = {gone: "page 1", open_page: "page 2"}
+    lab.pages, lab.sending = {gone: "page 1", open_page: "page 2"}, set()
     errors = []
 
     async def go():

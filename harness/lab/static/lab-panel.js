@@ -1,16 +1,17 @@
 // The 11/23's front panel (harness/lab/front_panel.py): the registers with their
 // FORTH roles, the PSW's fields, the words running (named from the dictionary),
 // the block and line being loaded, the bus devices' registers in octal. Redrawn
-// ten times a second when a new panel came (none comes while paused). Below it, a
-// breakpoint on a FORTH word or on an I/O register's access, and a one-instruction
-// step (harness/lab/breakpoints.py); when a breakpoint is hit, the instructions
-// before it, each with its word (showHistory, from lab.js), and the word's line in
-// the program pane. Interrupts per second per vector under the registers.
+// ten times a second when a new panel came (none comes while paused) that differs
+// from the one shown. Below it, a breakpoint on a FORTH word or on an I/O
+// register's access, and a one-instruction step (harness/lab/breakpoints.py);
+// when a breakpoint is hit, the instructions before it, each with its word
+// (showHistory, from lab.js), and the word's line in the program pane.
+// Interrupts per second per vector under the registers.
 "use strict";
 
 (() => {
   const box = document.getElementById("front-panel");
-  let shown = null;
+  let shown = null, shownHtml = "";
   const cell = (text, cls) => `<span class="${cls || ""}">${text}</span>`;
   const esc = (t) => String(t ?? "\u2014").replace(/[&<>]/g, (c) => ({ "&": "&amp;", "<": "&lt;", ">": "&gt;" })[c]);
 
@@ -35,7 +36,7 @@
     }
     const rates = [...groups].map(([board, list]) => `${cell(esc(board), "rr")} ${list.join(" ")}`)
       .join(" ");                     // the boards' names (dim) part them
-    box.innerHTML =
+    const html =
       `<div class="fp-head">PDP-11/23 ${cell(`PSW ${p.psw}`, "rv")} priority ${cell(f.priority, "rv")}` +
       ` T ${cell(f.T, "rv")} ${flags} ${cell(f.mode, "dim")}</div>` +
       `<div class="fp-words">PC in ${cell(esc(p.pc_in), "word")} \u00b7 thread of ${cell(esc(p.ip_in), "word")}` +
@@ -43,6 +44,7 @@
       `<div class="fp-regs">${regs}</div><div class="fp-devs">${devices}</div>` +
       `<div class="fp-ints" title="interrupts the CPU took per simulated second, per vector (traps are not counted)">` +
       `interrupts/s ${rates || cell("none yet", "dim")}</div>`;
+    if (html !== shownHtml) box.innerHTML = shownHtml = html;   // unchanged: no relayout
   }
 
   setInterval(() => {

@@ -44,23 +44,30 @@ function trailPoints() {           // [time, x, y] where both axes have a sample
 }
 
 function drawTrail(g, px, py, points) {   // older is fainter; a gap (a fast run's skip) breaks it
-  const now = lab.status.time;
-  for (let band = 0; band < FADE_STEPS; band++) {
-    const from = now - TRAIL_S * (1 - band / FADE_STEPS), to = now - TRAIL_S * (1 - (band + 1) / FADE_STEPS);
-    g.strokeStyle = "#a5d6ff";
-    g.globalAlpha = 0.1 + 0.9 * (band + 1) / FADE_STEPS;
-    g.lineWidth = 2.5;
-    g.beginPath();
-    let open = false;
-    for (let k = 1; k < points.length; k++) {
-      const [t, x, y] = points[k], [t0, x0, y0] = points[k - 1];
-      if (t < from || t > to) continue;
-      if (t - t0 > GAP_S * 2) { open = false; continue; }
-      if (!open) { g.moveTo(px(x0), py(y0)); open = true; }
-      g.lineTo(px(x), py(y));
+  const now = lab.status.time, band_s = TRAIL_S / FADE_STEPS;
+  g.strokeStyle = "#a5d6ff";
+  g.lineWidth = 2.5;
+  let band = -1, X0 = null, Y0 = null;   // the band drawn, the path's last point (null: none)
+  for (let k = 1; k < points.length; k++) {
+    const [t, x, y] = points[k], [t0, x0, y0] = points[k - 1];
+    const b = Math.min(FADE_STEPS - 1, Math.max(0, Math.floor((t - (now - TRAIL_S)) / band_s)));
+    if (b !== band) {                     // one path per alpha band, in time order
+      if (band >= 0) g.stroke();
+      band = b;
+      g.globalAlpha = 0.1 + 0.9 * (band + 1) / FADE_STEPS;
+      g.beginPath();
+      X0 = null;
     }
-    g.stroke();
+    if (t - t0 > GAP_S * 2) { X0 = null; continue; }
+    const X = px(x), Y = py(y);
+    if (X0 === null) { X0 = px(x0); Y0 = py(y0); g.moveTo(X0, Y0); }
+    // a point less than half a pixel on adds nothing to the picture but a join to
+    // stroke (the axes hunt round a target: thousands of them); the last one is kept
+    if (Math.abs(X - X0) + Math.abs(Y - Y0) < 0.5 && k < points.length - 1) continue;
+    g.lineTo(X, Y);
+    X0 = X; Y0 = Y;
   }
+  if (band >= 0) g.stroke();
   g.globalAlpha = 1;
 }
 
@@ -106,10 +113,38 @@ function drawFingers(g, X, Y, scale) {   // the gripper, when it is in use: fing
   g.fillRect(X + half, Y - 16, 6, 32);
 }
 
+function zTrail() {                 // z's samples of the last TRAIL_S seconds
+  return (lab.traces[2] || []).filter((r) => r[ROW.time_s] >= lab.status.time - TRAIL_S);
+}
+
+// What the picture shows, or null while it changes with time alone (the trail fades:
+// x, y or z moved in the last TRAIL_S seconds). An unchanged picture is not drawn
+// again: Chromium would redraw and composite the canvas 30 times a second for
+// nothing while the robot stands (docs/lab.md, Cost).
+function robotShows(w, h) {
+  const since = lab.status.time - TRAIL_S, kept = [];
+  for (const axis of [0, 1, 2]) {     // newest first, no copies: this runs every frame
+    const trace = lab.traces[axis] || [], last = trace[trace.length - 1];
+    let n = 0;
+    for (let k = trace.length - 1; k >= 0 && trace[k][ROW.time_s] >= since; k--, n++)
+      if (trace[k][ROW.pos] !== last[ROW.pos]) return null;
+    kept.push(n);
+  }
+  const drawn = lab.latest.map((r) => r && [r[ROW.pos], r[ROW.counter], r[ROW.grip], r[ROW.contact]]);
+  return JSON.stringify([w, h, window.devicePixelRatio, drawn, lab.servo["Desire.Pos"], lab.stops,
+                         robotView.targets, Math.ceil(kept[2] / 8)]);   // z's marks pile up
+}
+let robotShown = null;
+
 function drawRobot() {
   const { g, w, h } = sized(document.getElementById("robot"));
-  g.clearRect(0, 0, w, h);
   noteTargets();
+  const shows = robotShows(w, h);
+  if (shows !== null && shows === robotShown) return;
+  robotShown = shows;
+  const points = trailPoints(), zs = zTrail();
+  robotView.trail = points.length;
+  g.clearRect(0, 0, w, h);
   const gauge = Math.min(150, w * 0.2), top = 26, bottom = h - 52;
   const sx = stopsOf(0), sy = stopsOf(1);
   const spanX = sx.max - sx.min, spanY = sy.max - sy.min;
@@ -141,8 +176,6 @@ function drawRobot() {
   const ox = origin(0), oy = origin(1);
   robotView.origin = ox === null || oy === null ? null : [ox, oy];
   if (robotView.origin) drawOrigin(g, px, py, bx, by, bw, bh, ox, oy);
-  const points = trailPoints();
-  robotView.trail = points.length;
   drawTrail(g, px, py, points);
   drawTargets(g, px, py);
   // the gantry: a bridge along y at the carriage's x, the carriage on it
@@ -166,7 +199,7 @@ function drawRobot() {
   label(g, "top view \u00b7 trail: last 10 s", bx + 6, by + 18, "#8b949e", "left", 13);
   readout(g, 0, bx, h - 28, "left");
   readout(g, 1, bx + bw, h - 28, "right");
-  drawZ(g, w - 2 * gauge + 10, top, gauge - 20, bottom - top);
+  drawZ(g, w - 2 * gauge + 10, top, gauge - 20, bottom - top, zs);
   drawT(g, w - gauge + 10, top, gauge - 20, bottom - top);
 }
 
@@ -181,12 +214,11 @@ function readout(g, axis, x, y, align) {   // counts (the servo's) over inches (
   label(g, `plant ${units(axis, position(axis))}`, x, y + 20, "#8b949e", align, 14);
 }
 
-function drawZ(g, x, y, w, h) {                     // z: a height gauge, stops at its ends
+function drawZ(g, x, y, w, h, zs) {                 // z: a height gauge, stops at its ends
   const s = stopsOf(2), z = position(2), stop = atStop(2), t = target(2);
   const bar = Math.min(46, w * 0.45), bx = x + (w - bar) / 2, top = y + 10, hh = h - 30;
   const py = (v) => top + hh - (v - s.min) / (s.max - s.min) * hh;
   g.fillStyle = "#0b1220"; g.fillRect(bx, top, bar, hh);
-  const zs = (lab.traces[2] || []).filter((r) => r[ROW.time_s] >= lab.status.time - TRAIL_S);
   g.fillStyle = COLORS[2];
   zs.forEach((r, i) => {                            // z's trail: faint marks of where it was
     if (i % 8) return;

@@ -196,9 +196,11 @@ function thinning(source, start, end) {   // 1 tick in k: the server's thinning 
 
 // ---- the plot ---------------------------------------------------------------------------
 const plotBox = document.getElementById("scope-plot");
+let scopeShown = null;               // the frozen view the plot has drawn (drawScope)
 
 function rebuildPlot() {
   if (scope.plot) scope.plot.destroy();
+  scopeShown = null;
   const scales = [], colors = [];    // each scale's axis in its first channel's colour
   const list = series().map((s) => {
     const id = s.channel[0], scale = SCALE_OF[id] || id;
@@ -291,15 +293,23 @@ function drawScope() {               // lab.js's frame loop, when something chan
   if (!scope.plot) rebuildPlot();
   const r = plotBox.getBoundingClientRect();
   const u = scope.plot;
-  if (Math.abs(u.width - r.width) > 1 || Math.abs(u.height - r.height) > 1)
-    u.setSize({ width: Math.max(100, r.width), height: Math.max(60, r.height) });
-  const { x, ys, start, end } = build(Math.round(u.bbox.width / (window.devicePixelRatio || 1)));
-  scope.data = [x].concat(ys);
-  scope.view = [start, end];
-  u.batch(() => {
-    u.setData(scope.data);             // each y scale fitted to what is shown now,
-    u.setScale("x", { min: start, max: end });   // the time axis to the window
-  });
+  // Frozen, the picture changes only with the view (the run's data goes on coming):
+  // it is not built and drawn again until the view changes.
+  const frozen = scope.frozen && JSON.stringify([scope.frozen.end, scope.zoom, scope.pan, scope.window,
+    scope.trigger, scope.level, scope.pre, scope.cursors, scope.channels, scope.overlay && scope.overlay.name,
+    r.width, r.height, window.devicePixelRatio]);
+  if (!frozen || frozen !== scopeShown) {
+    scopeShown = frozen;
+    if (Math.abs(u.width - r.width) > 1 || Math.abs(u.height - r.height) > 1)
+      u.setSize({ width: Math.max(100, r.width), height: Math.max(60, r.height) });
+    const { x, ys, start, end } = build(Math.round(u.bbox.width / (window.devicePixelRatio || 1)));
+    scope.data = [x].concat(ys);
+    scope.view = [start, end];
+    u.batch(() => {
+      u.setData(scope.data);             // each y scale fitted to what is shown now,
+      u.setScale("x", { min: start, max: end });   // the time axis to the window
+    });
+  }
   const text = `${scope.readout()}\n${note()}`;
   if (text !== readoutText) {
     const [line, why] = (readoutText = text).split("\n");

@@ -24,7 +24,7 @@ const send = (message) => socket.readyState === 1 && socket.send(JSON.stringify(
 const lab = {                      // everything the page knows; window.lab for tests
   stops: {}, status: { time: 0, tick: 0, state: "run", speed: "real", power: "off" },
   servo: {}, perAxis: [], single: [], traces: [], latest: [],
-  rowsSeen: 0, ended: false, connected: false, dirty: true,
+  rowsSeen: 0, ended: false, connected: false,
   keyboard: { holder: null, you: false }, outbox: "", room: 4096, errors: [],
 };
 window.lab = lab;
@@ -86,8 +86,8 @@ document.getElementById("take").addEventListener("click", () => { lab.take(); te
 function showInput() {
   const waiting = (lab.status.waiting || 0) + lab.outbox.length;
   const box = document.getElementById("waiting");
-  box.textContent = waiting ? `${waiting} characters waiting for the machine` : "";
-  box.hidden = !waiting;
+  put(box, waiting ? `${waiting} characters waiting for the machine` : "");
+  if (box.hidden !== !waiting) box.hidden = !waiting;
 }
 function showKeyboard() {
   const k = lab.keyboard, note = document.getElementById("keyboard");
@@ -176,10 +176,19 @@ function takeData(m) {
 }
 
 // ---- time control ----------------------------------------------------------------------
+// The page changes an element only when what it shows changes: a write of the same
+// text or attribute still costs Chromium a style, layout and paint pass, 30 times a
+// second (docs/lab.md, Cost).
+function put(element, text) {
+  if (element.textContent !== text) element.textContent = text;
+}
+function putAttribute(element, name, value) {
+  if (element.getAttribute(name) !== value) element.setAttribute(name, value);
+}
 function setBadge(kind, text) {
   const badge = document.getElementById("state");
-  badge.className = "badge " + kind;
-  badge.textContent = text;
+  if (badge.className !== "badge " + kind) badge.className = "badge " + kind;
+  put(badge, text);
 }
 document.querySelectorAll("#speeds button").forEach((b) =>
   b.addEventListener("click", () => send({ t: "speed", v: b.dataset.speed })));
@@ -191,20 +200,20 @@ document.getElementById("power").addEventListener("click", () =>
 
 function drawStatus() {
   const s = lab.status;
-  document.getElementById("simtime").textContent = `${s.time.toFixed(3)} s`;
-  document.getElementById("simtick").textContent = `tick ${s.tick} \u00b7 60 Hz`;
+  put(document.getElementById("simtime"), `${s.time.toFixed(3)} s`);
+  put(document.getElementById("simtick"), `tick ${s.tick} \u00b7 60 Hz`);
   if (!lab.ended) {
     const speedText = { real: "\u00d71", x10: "\u00d710", full: "FULL" }[s.speed] || "";
     if (s.prompt) setBadge("pause", "STOPPED sim>");   // SIMH has the machine stopped
     else if (s.state === "pause") setBadge("pause", "PAUSED");
     else setBadge("run", `RUN ${speedText}`);
   }
-  document.getElementById("pause").textContent = s.state === "pause" || s.prompt ? "Run" : "Pause";
+  put(document.getElementById("pause"), s.state === "pause" || s.prompt ? "Run" : "Pause");
   const power = document.getElementById("power");
-  power.textContent = s.power === "on" ? "Turn amps off" : "Turn amps on";  // what a click does
-  power.title = `the amplifier rack is ${s.power.toUpperCase()}: click to switch it ` +
-    `${s.power === "on" ? "off" : "on"} (SET PLANT POWER)`;
-  power.setAttribute("aria-pressed", String(s.power === "on"));
+  put(power, s.power === "on" ? "Turn amps off" : "Turn amps on");  // what a click does
+  putAttribute(power, "title", `the amplifier rack is ${s.power.toUpperCase()}: click to switch it ` +
+    `${s.power === "on" ? "off" : "on"} (SET PLANT POWER)`);
+  putAttribute(power, "aria-pressed", String(s.power === "on"));
   power.classList.toggle("on", s.power === "on");
   typedAhead.status(s);
   document.querySelectorAll("#speeds button").forEach((b) =>
@@ -321,20 +330,32 @@ function drawAsn() {
 
 // ---- the frame loop -------------------------------------------------------------------------
 // Drawn when something changed (new data comes about 30 times a second, or the
-// user changed the view): an unchanged frame is not drawn again, which halves
-// what the page costs the host.
-let lastTable = 0;
+// user changed the view): setting lab.dirty asks for animation frames, which go on
+// while data comes (KEEP_FRAMES_MS: a frame clock started anew for each message
+// would come late and draw two messages in one). Nothing changed for that long, no
+// frame is asked for: a paused page costs the host next to nothing.
+const KEEP_FRAMES_MS = 250;
+let dirty = true, frameAsked = false, lastDrawn = -Infinity;
+Object.defineProperty(lab, "dirty", {
+  get: () => dirty,
+  set: (value) => {
+    dirty = value;
+    if (dirty && !frameAsked) { frameAsked = true; requestAnimationFrame(frame); }
+  },
+});
 function frame(now) {
-  if (lab.dirty && AXES.length) {     // nothing to draw before the hello
-    lab.dirty = false;
+  frameAsked = false;
+  if (dirty && AXES.length) {         // nothing to draw before the hello (it sets dirty)
+    dirty = false;
+    lastDrawn = now;
     drawStatus();
     if (!document.getElementById("robot-panel").hidden) drawRobot();   // another view (lab-teach.js)
     drawScope();
     lab.frames = (lab.frames || 0) + 1;
   }
-  if (now - lastTable > 100) { drawTable(); lastTable = now; }
-  requestAnimationFrame(frame);
+  if (now - lastDrawn < KEEP_FRAMES_MS) { frameAsked = true; requestAnimationFrame(frame); }
 }
 window.addEventListener("resize", () => { fitTerminal(); lab.dirty = true; });
 document.addEventListener("click", () => { lab.dirty = true; });
-requestAnimationFrame(frame);
+setInterval(drawTable, 100);
+lab.dirty = true;
