@@ -48,6 +48,12 @@ def click(page, selector):
     page.find_element(By.CSS_SELECTOR, selector).click()
 
 
+def pace(page, speed):
+    """The page's pace button (real, x10, full); wait until the lab runs at it."""
+    click(page, f'#speeds button[data-speed="{speed}"]')
+    wait_for(f"{speed} pace", lambda: js(page, "window.lab.status.speed") == speed)
+
+
 def connected(page):
     """Wait until the page has its websocket and the server's hello (the axes)."""
     wait_for("the page to connect", lambda: page.execute_script(

@@ -8,8 +8,8 @@ from selenium.webdriver.common.by import By
 from harness.analysis.trace import parse_rows
 from harness.machine.plant_rows import COLUMNS
 
-from labpage import ARTIFACTS, assert_on_screen, click, connected, full_session, js, projector, \
-    serious_violations, type_line, wait_for
+from labpage import ARTIFACTS, assert_on_screen, click, connected, full_session, js, pace, \
+    projector, serious_violations, type_line, wait_for
 
 # The lab boots with the amplifier rack off, as make run does: nothing drifts until
 # the page's switch is turned on after Set.Up.Robot. x10 keeps the run short.
@@ -45,8 +45,7 @@ def test_a_move_shows_on_the_robot_and_the_scope(page):
     assert power.get_attribute("aria-pressed") == "true"
     robot_before = js(page, "document.getElementById('robot').toDataURL()")
     start = js(page, "window.lab.latest.map(r => r[5])")
-    click(page, '#speeds button[data-speed="real"]')  # the scope's 30 s keep the whole move
-    wait_for("real pace", lambda: js(page, "window.lab.status.speed") == "real")
+    pace(page, "real")                               # the scope's 30 s keep the whole move
     type_line(page, "800 800 400 0 Abs.Move")
     assert wait_for("Desire.Pos to follow the move",
                     lambda: js(page, "window.lab.servo['Desire.Pos']") == [800, 800, 400, 0])
@@ -184,10 +183,11 @@ def test_the_page_fits_both_projectors_without_scrolling(page, width, height):
         if js(page, "window.lab.status.state") == "pause":     # the move test paused it
             click(page, "#pause")                              # Run
             wait_for("the run", lambda: js(page, "window.lab.status.state") == "run")
-        click(page, '#speeds button[data-speed="x10"]')   # the move test chose real pace
-        wait_for("x10", lambda: js(page, "window.lab.status.speed") == "x10")
+        pace(page, "x10")                            # the move test chose real pace
         type_line(page, "3200 -2400 400 0 Abs.Move")
         wait_for("the move", lambda: js(page, "window.lab.latest[0][6]") > 3000)
+        pace(page, "real")                           # its trail (the last 10 simulated
+                                                     # seconds) stays in the screenshots
     with projector(page, width, height):
         assert_on_screen(page, width, height,
                          ("console-panel", "robot-panel", "servo-panel", "scope-panel"))
