@@ -44,6 +44,7 @@ FRAME_S = 1 / 30                 # how often plant rows and the servo's words go
 FULL_SPEED_FRAME_S = 1 / 10      # at full speed: snapshots anyway, and Chromium's drawing
                                  # would take the simulator's core (docs/lab.md, cost)
 PROBE_S = 1.0                    # how often the dictionary's heads are looked at
+DICTIONARY_WAIT_S = 2.0          # a breakpoint's word not known: at most this for a probe
 ROWS_PER_FRAME = 400             # more than this (fast runs) are thinned per axis
 TICKS_PER_FRAME = 100            # changes of the watched words per frame (word_history.py)
 SCROLLBACK = 1 << 17
@@ -60,6 +61,7 @@ class Lab:
                              speed, page=self.to_pages, read_only=read_only)
         self.shell_echo = None           # the shell's terminal, when it types too
         self.watch = ServoWatch(symbols)
+        self.dictionary_read = asyncio.Event()   # a probe's answer read (read_dictionary)
         self.rack_hint = RackHint()
         self.program = ProgramPane(disk, lister)   # the program pane's blocks and listings
         self.listings = LatestQuestion()           # one listing at a time, the latest asked
@@ -113,10 +115,26 @@ class Lab:
                         "what": f"{what}, in {word}" if word else what, "where": where})
 
     async def set_break(self, word):
+        if isinstance(word, str) and self.words.address_of(word) is None:
+            await self.read_dictionary()         # defined since the last probe?
         lines, said = breakpoints.break_lines(self.words, word)
         self.note(said)
         if lines:
             await self._at_sim(lines)
+
+    async def read_dictionary(self, wait_s=DICTIONARY_WAIT_S):
+        """Probe the dictionary now (not at the next PROBE_S) and wait until the
+        answer is read: a word defined a moment ago is known by name. Not while
+        SIMH has the machine stopped (the device answers only while it runs)."""
+        if self.sim.watcher.at_simh:
+            return
+        self.dictionary_read.clear()
+        for command in self.watch.probe():
+            self.sim.command(command)
+        try:
+            await asyncio.wait_for(self.dictionary_read.wait(), wait_s)
+        except asyncio.TimeoutError:
+            pass                                 # the names as they were
 
     async def set_iobreak(self, address):
         """SET LAB IOBREAK (io_break.c) at sim>; SIMH's refusal (no device answers
@@ -164,9 +182,13 @@ class Lab:
         elif row.kind == "M":
             for command in self.watch.on_memory(*words_of(row)):
                 self.sim.command(command)
+            if self.watch.settled():
+                self.dictionary_read.set()
         elif row.kind == "A":
             self.watch.on_addresses([int(a, 8) for a in row.fields])
             self.words.learn(self.watch.memory, self.watch.vocabulary)   # a fresh dictionary
+            if self.watch.settled():
+                self.dictionary_read.set()
         elif row.kind == "R":
             self.panel = panel(row.fields, self.words)
         elif row.kind == "I":

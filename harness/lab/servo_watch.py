@@ -33,9 +33,12 @@ class ServoWatch:
         self.layout = []               # (name, axis or None) per watched word
         self.pending = ([], [])        # addresses asked for, and their layout
         self.found = {}
+        self.probes = self.answered = 0    # probes asked for; their HERE rows come in order
+        self.awaiting = False              # a watch list sent, its A row not yet back
 
     def probe(self):
         """The commands that read the chain heads and HERE, and the dumped arrays."""
+        self.probes += 1
         return [f"dump {self.vocabulary:o} {CHAINS}", f"dump {self.fence:o} 1",
                 f"dump {self.dp:o} 1"] + [f"dump {self.found[name]:o} {n}"
                                           for name, n in DUMPED.items() if name in self.found]
@@ -49,6 +52,8 @@ class ServoWatch:
         watch list), in order."""
         self.memory.store(address, words)
         last = address + 2 * len(words) - 2
+        if address == self.dp and len(words) == 1:
+            self.answered += 1                 # a probe's last row (before its arrays)
         if address == self.dp and self.dump_end is None:
             state = self._state()
             if state != self.seen and None not in state:
@@ -78,12 +83,19 @@ class ServoWatch:
                 layout.append((name, None))
                 addresses.append(self.found[name])
         self.pending = (addresses, layout)
+        self.awaiting = True
         return "watch " + " ".join(f"{a:o}" for a in addresses)
+
+    def settled(self):
+        """Every probe asked for is answered, and a dictionary that changed is read
+        (dumped, and its watch list confirmed): the names are the FORTH's own now."""
+        return self.answered >= self.probes and self.dump_end is None and not self.awaiting
 
     def on_addresses(self, addresses):
         """The device's A row: from now on W rows carry these addresses."""
         wanted, layout = self.pending
         self.layout = layout if addresses == wanted else []
+        self.awaiting = False
 
     def values(self, words):
         """{name: [x, y, z, t]} or {name: value} from a W row's words (signed);

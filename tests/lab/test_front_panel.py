@@ -82,8 +82,9 @@ async def until_message(page, wanted, timeout=30):
 
 
 def test_a_breakpoint_on_a_forth_word_stops_with_its_history(lab_server):
-    """The page names a word; the lab breaks on its code field (through sim>'s own
-    SET CPU HISTORY, BREAK and CONT); when the word runs, the page gets the
+    """The page names a word defined a moment ago; the lab reads the dictionary and
+    breaks on its code field (through sim>'s own SET CPU HISTORY, BREAK and CONT);
+    when the word runs, the page gets the
     instructions before it, each with the word its PC lies in; clearing the
     breakpoint lets the run go on, the word's answer intact."""
     async def steps(page):
@@ -91,12 +92,9 @@ def test_a_breakpoint_on_a_forth_word_stops_with_its_history(lab_server):
         await page.type(": TWICE ( n -- 2n ) DUP + ;\r")
         await page.until(r"ok\r\n", start)
         start = len(page.screen)
-        for _ in range(20):               # until the lab has read the new dictionary
-            await page.ws.send_str(json.dumps({"t": "break", "word": "twice"}))
-            said = await page.until(r"\[lab\] (breakpoint on|no word) [^\r]*\r", len(page.screen))
-            if "breakpoint on" in said:
-                break
-            await asyncio.sleep(0.5)
+        await page.ws.send_str(json.dumps({"t": "break", "word": "twice"}))   # defined just now:
+        said = await page.until(r"\[lab\] (breakpoint on|no word) [^\r]*\r", start)   # the lab
+        assert "breakpoint on twice" in said, said            # reads the dictionary first
         await page.until(r"sim> cont", start)
         await asyncio.sleep(0.5)                        # CONT's flush of typed-ahead keys
         await page.type("3 TWICE .\r")

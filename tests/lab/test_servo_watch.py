@@ -112,3 +112,29 @@ def test_the_asn_words_are_watched_and_its_weights_dumped_with_each_probe():
     watch.on_addresses([trial, steps])
     watch.on_memory(weights, [0o177776] + [5] * 71)
     assert watch.values([3, 12]) == {"Trial.No": 3, "Steps": 12, "Weights": [-2] + [5] * 71}
+
+
+def test_settled_once_every_probe_is_answered_and_a_changed_dictionary_read():
+    """What a breakpoint on a word defined a moment ago waits for (server.read_dictionary)."""
+    d = Dictionary()
+    fence = d.here
+    direction = d.header("Dir", body_words=1)
+    watch = ServoWatch(symbols())
+    watch.probe()
+    assert not watch.settled()                             # asked, not answered
+    watch.on_memory(VOCABULARY, d.heads)
+    watch.on_memory(0o6462, [fence])
+    watch.on_memory(0o6344, [d.here])                      # HERE moved: the dictionary is dumped
+    assert not watch.settled()
+    d.memory.store(0o6344, [d.here])
+    d.memory.store(0o6462, [fence])
+    watch.on_memory(ORIGIN, [d.memory.word(a) or 0 for a in range(ORIGIN, d.here, 2)])
+    assert not watch.settled()                             # its watch list not yet confirmed
+    watch.on_addresses([direction])
+    assert watch.settled()
+    watch.probe()
+    watch.probe()
+    watch.on_memory(0o6344, [d.here])                      # unchanged: nothing to dump
+    assert not watch.settled()                             # the second probe's answer to come
+    watch.on_memory(0o6344, [d.here])
+    assert watch.settled()
