@@ -7,7 +7,7 @@ import re
 
 from harness.lab.dictionary import Memory
 from harness.lab.front_panel import WordIndex, decode_psw, panel
-from test_sim_prompt_server import session
+from test_sim_prompt_server import answering, session
 
 # full speed: the I/O breakpoint's test waits for a second of 60 interrupts a second
 # and the dictionary read that follows (x10 timed out there)
@@ -96,7 +96,7 @@ def test_a_breakpoint_on_a_forth_word_stops_with_its_history(lab_server):
         said = await page.until(r"\[lab\] (breakpoint on|no word) [^\r]*\r", start)   # the lab
         assert "breakpoint on twice" in said, said            # reads the dictionary first
         await page.until(r"sim> cont", start)
-        await asyncio.sleep(0.5)                        # CONT's flush of typed-ahead keys
+        await answering(page)                           # the machine runs again
         await page.type("3 TWICE .\r")
         history = (await until_message(page, lambda m: m["t"] == "history"))["rows"]
         said = page.screen[start:]

@@ -55,9 +55,14 @@ def session(server, steps):
 
 
 async def cont(page):
-    """CONT, then empty lines until the FORTH answers one: SIMH discards what
-    reaches the terminal before the machine runs again (TCSAFLUSH)."""
+    """CONT, then empty lines until the FORTH answers one."""
     await page.type("cont\r")
+    await answering(page)
+
+
+async def answering(page):
+    """Empty lines until the FORTH answers one: SIMH discards what reaches the
+    terminal before the machine runs again (TCSAFLUSH) after CONT."""
     for _ in range(40):
         start = len(page.screen)
         await page.type("\r")
