@@ -20,24 +20,40 @@ class LabProcess:
     the lab tests' simulator CPU), while x10 still runs a 1000 LOAD in half a second."""
 
     def __init__(self, tmp, speed="x10"):
+        """Starts the lab; its URL is waited for when first asked (url, port, token),
+        so a caller may start a browser meanwhile."""
         self.disk = disk = fresh_disk(tmp)
         self.log = Path(tmp) / "lab.log"
         with open(self.log, "w") as log:
             self.proc = subprocess.Popen(
                 [sys.executable, "-m", "harness", "lab", "--port", "0", "--speed", speed,
                  "--disk", str(disk)], cwd=ROOT, stdout=log, stderr=subprocess.STDOUT)
-        deadline = time.monotonic() + 30
-        while not (m := URL.search(self.text())):
-            if self.proc.poll() is not None or time.monotonic() > deadline:
+        self._started = time.monotonic()
+        self._served = None
+
+    def _announced(self):
+        """The URL the lab printed: (url, port, token), waited for once."""
+        deadline = self._started + 30
+        while self._served is None:
+            m = URL.search(self.text())
+            if m:
+                self._served = m.group(0), int(m.group(1)), m.group(2)
+            elif self.proc.poll() is not None or time.monotonic() > deadline:
                 self.proc.kill()
                 raise RuntimeError(f"the lab server did not start:\n{self.text()}")
-            time.sleep(0.05)
-        self.url, self.port, self.token = m.group(0), int(m.group(1)), m.group(2)
+            else:
+                time.sleep(0.02)
+        return self._served
+
+    url = property(lambda self: self._announced()[0])
+    port = property(lambda self: self._announced()[1])
+    token = property(lambda self: self._announced()[2])
 
     def text(self):
         return self.log.read_text()
 
     def simulator_pid(self):
+        self._announced()                  # the simulator is started before the URL is printed
         children = Path(f"/proc/{self.proc.pid}/task/{self.proc.pid}/children").read_text()
         return int(children.split()[0])
 
