@@ -46,14 +46,24 @@ function channelName([id, axis]) {
   return lab.single.includes(name) || ["grip", "contact", "missed"].includes(name) ? name : `${AXES[axis]} ${name}`;
 }
 
+// The index of the first row at or after time t (rows in time order): a window
+// is found without reading the 40 s kept before it, every frame.
+function firstFrom(rows, t) {
+  let lo = 0, hi = rows.length;
+  while (lo < hi) {
+    const mid = (lo + hi) >> 1;
+    if (rows[mid][ROW.time_s] < t) lo = mid + 1; else hi = mid;
+  }
+  return lo;
+}
+
 // Samples [t, v] of one signal: from `source` (live or frozen): {traces, words}
 function samples(source, [id, axis], start, end) {
   const [kind, name] = id.split(":"), out = [];
   if (kind === "plant") {
-    for (const r of source.traces[axis] || []) {
-      const t = r[ROW.time_s];
-      if (t >= start && t <= end) out.push([t, r[ROW[name]]]);
-    }
+    const rows = source.traces[axis] || [], column = ROW[name];
+    for (let k = firstFrom(rows, start); k < rows.length && rows[k][ROW.time_s] <= end; k++)
+      out.push([rows[k][ROW.time_s], rows[k][column]]);
     return out;
   }
   const value = (w) => { const v = w[name]; return v === undefined ? null : Array.isArray(v) ? v[axis] : v; };
@@ -110,6 +120,7 @@ scope.loadOverlay = (text, name) => {
       throw new Error(`${name} line ${k + 2}: not a plant trace row: ${line.slice(0, 60)}`);
     traces[row[ROW.axis]].push(row);
   });
+  for (const rows of traces) rows.sort((a, b) => a[ROW.time_s] - b[ROW.time_s]);   // firstFrom
   scope.overlay = { name, traces, words: [] };
   rebuildPlot();
 };
@@ -188,7 +199,8 @@ function valueAt(list, t) {          // the last sample at or before t
 }
 
 function thinning(source, start, end) {   // 1 tick in k: the server's thinning at full speed
-  const rows = (source.traces[scope.channels[0][1]] || []).filter((r) => r[ROW.time_s] >= start && r[ROW.time_s] <= end);
+  const all = source.traces[scope.channels[0][1]] || [];
+  const rows = all.slice(firstFrom(all, start), firstFrom(all, end + 1e-9));
   if (rows.length < 3) return 1;
   const gaps = rows.slice(1).map((r, k) => r[ROW.time_s] - rows[k][ROW.time_s]).sort((a, b) => a - b);
   return Math.max(1, Math.round(gaps[gaps.length >> 1] * 60));
