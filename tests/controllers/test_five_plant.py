@@ -10,6 +10,7 @@ import json
 import subprocess
 
 from harness.controllers.coordinator import Coordinator, member_settings
+from harness.lab.controllers_page import read_view
 from harness.machine.build import MACHINE_INI, PDP11
 from harness.machine.simh import deposit
 
@@ -95,5 +96,9 @@ def test_the_rack_switched_at_the_11_23s_sim_stops_and_resumes_the_drive(tmp_pat
     assert float(at[round(t_off + 0.300, 6)]["vel"]) < -9000      # and moving
     # the 11/03 sees the same plant: its SHOW at the end says the rack is on
     assert "power=on" in axis_out.split("PLANT, ")[-1]
-    # the lab page's status file says the rack's state
-    assert json.loads((tmp_path / "status.json").read_text())["power"] == 1
+    # the coordinator's status says the rack's state, and the lab's page of the five shows it
+    status_file = tmp_path / "status.json"
+    status = json.loads(status_file.read_text())
+    assert status["power"] == 1 and read_view(status_file, tmp_path)["rack_on"] is True
+    status_file.write_text(json.dumps({**status, "power": 0}))
+    assert read_view(status_file, tmp_path)["rack_on"] is False

@@ -5,11 +5,14 @@ test_five_plant.py): the FORTH of blocks 1080-1089 on the four 11/03s and
 between its FORTH lines). While the rack is off the 11/03s' servos write their
 move's velocity to the D/As and no drive reaches an axis (the trace's vcmd is 0
 on every row); switched on, the move resumes and Move.Complete? returns. Two
-runs give the same bytes on all five consoles and in the trace."""
+runs give the same bytes on all five consoles and in the trace. The same at
+`make run CONTROLLERS=4`, typed at the 11/23's console as a teacher would."""
 import csv
 import io
+import json
 import os
 import re
+import time
 
 import pytest
 
@@ -68,3 +71,51 @@ def test_the_rack_off_at_sim_stops_the_drive_and_on_again_the_move_completes(tmp
     counters = dict(re.findall(r"^([xyz]) +-?\d+ +(-?\d+) ", main, re.M))
     for a, target in TARGETS.items():
         assert abs(int(counters[a.lower()]) - target) <= HOLD, (a, counters)
+
+
+def test_a_teacher_switches_the_rack_at_make_run_controllers(tmp_path):
+    """^E, SET PLANT POWER=OFF, CONT at `make run CONTROLLERS=4`: the coordinator's
+    rack goes off (its status, the lab page's source; SHOW PLANT at the 11/23), a move
+    waits; ^E, SET PLANT POWER=ON, CONT: it completes."""
+    from harness.machine.build import PRISTINE_DISK, fresh_disk
+    from harness.machine.console_session import probe_prompt
+    from tests.controllers.test_lockstep_launch import harness, leave
+    disk = fresh_disk(tmp_path, "main.dsk", source=PRISTINE_DISK)
+    session = tmp_path / "session"
+    child = harness("controllers", "launch", "--fast", "--busy-wait", "5", "--disk", str(disk),
+                    "--session-dir", str(session))
+    child.timeout = 120
+    child.expect(" ok\r\n")
+    deadline = time.monotonic() + 120                 # the four servos booted (their logs)
+    while not all("servo on axis" in (session / f"{a}.log").read_text("latin-1")
+                  for a in "xyzt"):
+        assert time.monotonic() < deadline, "the 11/03s did not boot their servos"
+        time.sleep(0.2)
+
+    def at_sim(command):
+        child.send("\x05")
+        child.expect("sim> ")
+        child.send(command + "\r")
+        child.expect("sim> ")
+        shown = child.before
+        child.send("cont\r")
+        assert probe_prompt(child) == 0               # running again (CONT's TCSAFLUSH)
+        return shown
+
+    for line in ("1200 LOAD", "Set.Up.Robot"):
+        child.send(line + "\r")
+        child.expect(" ok")
+    at_sim("set plant power=off")
+    child.send("2000 1000 800 0 Abs.Move\r")
+    child.expect(" ok")
+    assert "power=off" in at_sim("show plant")
+    assert json.loads((session / "status.json").read_text())["power"] == 0
+    child.send(".Axes\r")                              # nothing moved
+    child.expect(r"x +2000 +(-?\d+) ")
+    assert abs(int(child.match.group(1))) < HOLD
+    at_sim("set plant power=on")
+    child.send("Move.Complete? .Axes\r")
+    child.expect(r"x +2000 +(-?\d+) ")
+    assert abs(int(child.match.group(1)) - 2000) <= HOLD
+    child.expect(" ok")
+    assert leave(child) == 0
