@@ -2,11 +2,12 @@
 coordinator steps (pdp11-devices/simh/lockstep_dev.c, plant/plant_dev.c,
 lockstep/quantum.c): two simulators with machine code deposited by SIMH (no
 FORTH), the 11/03 of x driving its D/A, the 11/23 switching the rack off and on
-at its sim> between STEPs. The long FORTH run of the five machines is
+at its sim> between STEPs, the 11/03 setting y's offset at its own. The long FORTH run of the five machines is
 test_five_plant_long.py (make test-controllers-long)."""
 import csv
 import io
 import json
+import re
 import subprocess
 
 from harness.controllers.coordinator import Coordinator, member_settings
@@ -37,6 +38,16 @@ quit
 """
 
 
+# the 11/03's sim> sets another axis of the one plant: y's amplifier offset
+AXIS_SIM = """deposit pc 1000
+step 1500
+set plant y offset=-40
+cont
+show plant
+quit
+"""
+
+
 def simulator(member, socket, program, commands, directory):
     script = (f"do {MACHINE_INI}\n" + "".join(f"{c}\n" for c in member_settings(member, socket))
               + deposit(0o1000, program) + commands)
@@ -49,7 +60,7 @@ def simulator(member, socket, program, commands, directory):
 def run(directory):
     with Coordinator(directory, trace="trace.csv", members=("x", "main"),
                      status=directory / "status.json") as c:
-        axis = simulator("x", c.socket, AXIS_DRIVES, "go 1000\nshow plant\nquit\n", directory)
+        axis = simulator("x", c.socket, AXIS_DRIVES, AXIS_SIM, directory)
         main = simulator("main", c.socket, BR_DOT, MAIN_SIM, directory)
         main_out, _ = main.communicate(timeout=60)
         axis_out, _ = axis.communicate(timeout=60)
@@ -94,8 +105,13 @@ def test_the_rack_switched_at_the_11_23s_sim_stops_and_resumes_the_drive(tmp_pat
     assert abs(float(at[round(t_off + 0.150, 6)]["vel"])) < 1     # at rest with the rack off
     assert abs(float(at[round(t_off + 0.200, 6)]["vcmd"]) - drive) < 1   # on again
     assert float(at[round(t_off + 0.300, 6)]["vel"]) < -9000      # and moving
-    # the 11/03 sees the same plant: its SHOW at the end says the rack is on
+    # the 11/03 sees the same plant: its SHOW at the end says the rack is on; its SET
+    # of y's offset (at 5 ms of its time) reached the 11/23's SHOW and y's drive
     assert "power=on" in axis_out.split("PLANT, ")[-1]
+    assert re.search(r"\n  Y .* -40\.0\d\d -  ", shows[0])
+    y = [r for r in csv.DictReader(io.StringIO(trace)) if r["axis"] == "Y"]
+    y_drive = {round(float(r["time_s"]), 3): float(r["vcmd"]) for r in y}
+    assert abs(y_drive[0.004] - 19.53 * 2) < 1 and abs(y_drive[0.006] - 19.53 * 40) < 1
     # the coordinator's status says the rack's state, and the lab's page of the five shows it
     status_file = tmp_path / "status.json"
     status = json.loads(status_file.read_text())
