@@ -328,9 +328,10 @@ def missing_blocks_note(disk, pristine=PRISTINE_DISK):
     """One line when `disk` lacks blocks the pristine image has (a working disk made
     by an older version: make never overwrites it), else None."""
     try:
-        missing = blocks_missing(read_image(disk), read_image(pristine))
+        work, shipped = read_image(disk), read_image(pristine)
     except DiskError:
         return None                          # the boot itself says what is wrong
+    missing = [] if work == shipped else blocks_missing(work, shipped)   # a copy lacks none
     if not missing:
         return None
     return (f"{disk} lacks blocks {block_ranges(missing)}, which this version ships (they "
