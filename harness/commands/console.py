@@ -22,8 +22,9 @@ Boot the FORTH on the robot's PDP-11/23 and join your terminal to its console,
 ready for `1000 LOAD`. The machine runs at the 11/23's pace (SET CLK
 REALTIME) unless --fast: then at full speed while the FORTH works, and at the
 11/23's pace while it waits for a key (SET CPU IDLE), which costs the host little;
---idle-speed N makes those waits pass N times faster (also the WAIT in
-Move.Complete?'s polling: a move takes less wall time, the same simulated time).
+--idle-speed N makes those waits pass N times faster: a key is read at the next
+clock tick, and a line's characters come as on a 9600-baud line (about 1 ms of
+waiting each at the 11/23's pace).
 
 {HINT}
 
@@ -44,10 +45,10 @@ def configure(parser):
     parser.add_argument("--fast", action="store_true",
                         help="full speed instead of the 11/23's real-time pace")
     parser.add_argument("--idle-speed", type=idle_speed, default=1, metavar="N",
-                        help="with --fast: the FORTH's waits (KEY at the prompt, WAIT "
-                        "while a move runs) pass at N times the 11/23's pace (SET CLK "
-                        f"IDLESPEED, 1-{IDLE_SPEED_MAX}; default 1): a simulated second "
-                        "of waiting takes 1/N wall seconds")
+                        help="with --fast: the FORTH's waits for keys (at the prompt, and "
+                        "between a line's characters) pass at N times the 11/23's pace "
+                        f"(SET CLK IDLESPEED, 1-{IDLE_SPEED_MAX}; default 1): a simulated "
+                        "second of waiting takes 1/N wall seconds")
     parser.add_argument("--trace", metavar="FILE", help="record the plant trace (CSV)")
     parser.add_argument("--read-only", action="store_true",
                         help="attach the disk read-only (beside a simulator writing it)")
