@@ -54,10 +54,10 @@ def harness_console(*args, **options):
     return spawn(sys.executable, "-m", "harness", "console", *args, **options)
 
 
-def ended(child):
-    """The exit status of a pexpect child at its end (EOF), closed without
-    pexpect's fixed pause."""
-    child.expect(pexpect.EOF)
+def ended(child, timeout=-1):
+    """The exit status of a pexpect child at its end (EOF, within `timeout` s: -1 the
+    child's own), closed without pexpect's fixed pause."""
+    child.expect(pexpect.EOF, timeout=timeout)
     pty_child.close(child)
     return child.exitstatus
 

@@ -40,7 +40,7 @@ def test_ctrl_c_drops_what_a_paste_still_has_waiting_and_says_how_much(tmp_path)
     child.send("P1000 .\r")
     child.expect("Error: undefined word: P1000")
     child.send("BYE\r")
-    assert ended(child) == 0
+    assert ended(child, timeout=60) == 0
 
 
 def test_ctrl_e_during_a_paste_stops_at_sim_and_cont_finishes_it_whole(tmp_path):
@@ -56,7 +56,7 @@ def test_ctrl_e_during_a_paste_stops_at_sim_and_cont_finishes_it_whole(tmp_path)
     child.expect(f"{expected(n)}  ok\r\n", timeout=60)
     assert "Error" not in child.before
     child.send("BYE\r")
-    assert ended(child) == 0
+    assert ended(child, timeout=60) == 0
 
 
 def test_keys_typed_while_the_machine_boots_wait_for_its_prompt(tmp_path):
@@ -69,4 +69,4 @@ def test_keys_typed_while_the_machine_boots_wait_for_its_prompt(tmp_path):
     child.expect(r"blocks 0-\d+\.\r\n ok\r\n")
     child.expect(r"2 3 \+ \. 5  ok\r\n")
     child.send("BYE\r")
-    assert ended(child) == 0
+    assert ended(child, timeout=60) == 0
