@@ -7,10 +7,10 @@ instructions neither uses (MUL, SOB, EMT, the condition codes ...)."""
 import re
 import tempfile
 
-import pexpect
 import pytest
 
 from harness.machine.build import fresh_disk
+from harness.machine.console_session import probe_prompt
 from harness.machine.machine import SIM_PROMPT, Machine
 
 LINE = re.compile(r"^([0-7]+): (.*?)((?: \\ \S+)*)\s*$")   # text, then \ NAME notes
@@ -54,10 +54,7 @@ def simh_disassembly(m, spans):
         m.child.expect(SIM_PROMPT)
         found.update((int(a, 8), t) for a, t in SIMH_LINE.findall(m.child.before))
     m.child.sendline("cont")
-    for _ in range(50):                  # SIMH drops what is typed as it resumes
-        m.child.send("\r")
-        if m.child.expect([r" ok\r\n", pexpect.TIMEOUT], timeout=0.2) == 0:
-            break
+    assert probe_prompt(m.child) == 0    # SIMH drops what is typed as it resumes
     m.send(".( sync)")
     return found
 
