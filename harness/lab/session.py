@@ -18,7 +18,6 @@ import os
 import shutil
 import sys
 import tempfile
-import time
 from pathlib import Path
 
 import pexpect
@@ -63,18 +62,6 @@ def _alive(pid):
         return False
     except PermissionError:
         return True
-    return True
-
-
-def exited(child, wait_s=EXIT_WAIT_S):
-    """Whether `child` has exited, waiting at most wait_s for one that is on its way
-    (its pty closed a moment before the kernel reaps it): pexpect's close would
-    sleep that long anyway, and kills what still runs after it."""
-    deadline = time.monotonic() + wait_s
-    while child.isalive():
-        if time.monotonic() > deadline:
-            return False
-        time.sleep(0.002)
     return True
 
 
@@ -347,8 +334,8 @@ class Simulator:
         for name in list(self.fds):
             self._unwatch(name)
         os.close(self.ctl)
-        exited(self.child)
-        pty_child.close(self.child)       # no fixed pause for a simulator that has quit
+        pty_child.exited(self.child, EXIT_WAIT_S)   # one that has quit is on its way out:
+        pty_child.close(self.child)                 # no fixed pause for it
         self.tmp.cleanup()
 
     def _leave(self, how, echo, page, left):

@@ -28,7 +28,6 @@ def exit_status(child, timeout=30):
     """The lab on a terminal has printed its last line: its exit status, the pty
     closed without pexpect's fixed pause (pty_child.close)."""
     child.expect(pexpect.EOF, timeout=timeout)
-    child.wait()
     pty_child.close(child)
     return child.exitstatus
 

@@ -224,7 +224,6 @@ def test_simh_never_ends_a_line_on_cr_at_its_prompt(line, tmp_path):
         assert not (tmp_path / "ran").exists()
         child.send(b"quit\n")
         child.expect(pexpect.EOF)
-        child.wait()
     finally:
         pty_child.close(child)
 
