@@ -63,7 +63,8 @@ def connected(page):
 def serious_violations(page):
     """axe-core's serious and critical violations on the page as it is, with the
     elements they name."""
-    page.execute_script(AXE.read_text())
+    if not page.execute_script("return typeof axe !== 'undefined'"):   # once per page load
+        page.execute_script(AXE.read_text())
     page.set_script_timeout(60)
     return page.execute_async_script(
         "const done = arguments[arguments.length - 1];"
