@@ -469,6 +469,15 @@ def make_app(lab, token, port_of):
     return app
 
 
+def deaf_to_late_interrupts(loop):
+    """The simulator has ended (its blocks flushed or reported): a ^C from here on has
+    nothing left to stop. Without this, asyncio puts Python's own SIGINT handler back
+    when the loop closes, and a ^C in that instant ended the process by the signal
+    (status -2) instead of with the lab's answer."""
+    loop.remove_signal_handler(signal.SIGINT)
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
 async def serve(simulator, disk, symbols, port, speed, announce, read_only=False, lister=None):
     """Run the lab until the user leaves; True if every UPDATEd block was written
     and the disk detached, None if the simulator exited by itself."""
@@ -496,6 +505,7 @@ async def serve(simulator, disk, symbols, port, speed, announce, read_only=False
         loop.add_signal_handler(signal.SIGHUP, lambda: (quiet_stdout(),
                                                         asyncio.ensure_future(lab.sim.close())))
         await lab.done.wait()
+        deaf_to_late_interrupts(loop)
         await lab.sent_all()                      # the last messages reach the pages
     finally:
         for task in tasks:

@@ -6,6 +6,8 @@ page's sim> since issue 18: tests/lab/test_sim_prompt_server.py.) And the FORTH'
 BYE word inside a line ends the lab as it ends make run."""
 import asyncio
 import contextlib
+import signal
+import time
 
 import pytest
 
@@ -73,3 +75,27 @@ def test_the_bye_word_inside_a_line_ends_the_lab_with_flush(tmp_path):
         assert server.proc.wait(timeout=60) == 0, server.text()
     assert "FLUSH answered ok" in server.text()
     assert (tmp_path / "robot.dsk").read_bytes()[BLOCK * 1024:(BLOCK + 1) * 1024] == b"Z" * 1024
+
+
+def test_a_late_ctrl_c_does_not_change_how_the_lab_ended(tmp_path):
+    """^C keeps arriving (every 2 ms) from the BYE on: while the lab leaves it is the
+    lab's own ^C (FLUSH, then leave), and once the simulator has ended it has nothing
+    left to stop; the lab exits with its answer, 0, not by the signal."""
+    server = LabProcess(tmp_path)
+
+    async def bye():
+        page = await Page.open(server)
+        await page.see(BOOTED)
+        await page.send({"t": "key", "d": "BYE\r"})
+        await page.until(lambda m: m["t"] == "ended")
+        await page.close()
+    try:
+        asyncio.run(bye())
+        while server.proc.poll() is None:
+            with contextlib.suppress(ProcessLookupError):
+                server.proc.send_signal(signal.SIGINT)
+            time.sleep(0.002)
+    finally:
+        server.stop()
+    assert server.proc.returncode == 0, server.text()[-2000:]
+    assert "Traceback" not in server.text()
