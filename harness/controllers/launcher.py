@@ -29,7 +29,7 @@ from harness.controllers.bridge import ConsoleBridge
 from harness.controllers.coordinator import CONTROLLERS, Coordinator, member_settings
 from harness.controllers.members import SESSION_OVER
 from harness.controllers.scripted import axis_blocks_present
-from harness.machine import simh
+from harness.machine import pty_child, simh
 from harness.machine.build import (CONTROLLERS_DIR, KERNEL, KERNEL_1103, PDP11, PRISTINE_DISK,
                                     fresh_disk)
 from harness.machine.console_session import session
@@ -118,7 +118,7 @@ class Launch:
         self._running = False
         self._thread.join()
         for child in self.children.values():
-            child.close(force=True)
+            pty_child.close(child)
         self.bridge.close()
         self.coordinator.stop()
         self.coordinator.__exit__()
