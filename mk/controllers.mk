@@ -14,8 +14,8 @@ bench-controllers: $(BUILD)/pdp11 $(BUILD)/lockstep-coordinator $(BUILD)/barrier
 	@$(PY) -m harness.bench.controllers_bench
 BENCHES += bench-controllers
 
-test-controllers-long: $(CONTROLLERS_NEEDS)  ## the long five-machine runs: a move twice (byte-identical), a kill during a move (not in make test)
-	@CONTROLLERS_LONG=1 $(PY) -m pytest -q -n0 tests/controllers/test_lockstep_long.py
+test-controllers-long: $(CONTROLLERS_NEEDS)  ## the long five-machine runs: a move twice (byte-identical), a kill during a move, the rack switched off and on at sim> during a move (not in make test)
+	@CONTROLLERS_LONG=1 $(PY) -m pytest -q -n0 tests/controllers/test_lockstep_long.py tests/controllers/test_five_plant_long.py
 
 controllers-runs: $(CONTROLLERS_NEEDS)  ## docs/servo.md's moves on both architectures: the table and figures of docs/controllers.md
 	@$(PY) -m harness.figures.controllers_runs $(BUILD)/controllers-runs --figures docs/img/controllers

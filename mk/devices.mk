@@ -57,7 +57,7 @@ $(KDF11_TABLE): harness/analysis/kdf11.py harness/analysis/kdf11_table.py | $(VE
 $(DEV_OBJ)/simh/kdf11_time.o: $(KDF11_TABLE)
 
 # the pure mechanics and lock-step logic (no SIMH types): strict flags, tested alone
-PURE_OBJS := $(addprefix $(DEV_OBJ)/plant/,plant.o gripper.o plant_row.o) \
+PURE_OBJS := $(addprefix $(DEV_OBJ)/plant/,plant.o plant_command.o gripper.o plant_row.o) \
              $(addprefix $(DEV_OBJ)/lockstep/,link.o quantum.o wire_io.o)
 $(PURE_OBJS): $(DEV_OBJ)/%.o: $(DEV_DIR)/%.c $(DEV_HDRS)
 	@mkdir -p $(dir $@)
@@ -95,9 +95,12 @@ $(BUILD)/barrier-bench: $(DEV_DIR)/lockstep/barrier_bench.c $(DEV_OBJ)/lockstep/
 $(BUILD)/lockstep_test: tests/controllers/lockstep_test.c $(LOCKSTEP_PURE) $(DEV_HDRS)
 	@$(CC) $(PLANT_CFLAGS) $(DEV_INCS) -o $@ $< $(LOCKSTEP_PURE) -lm
 
+$(BUILD)/plant_command_test: tests/controllers/plant_command_test.c $(LOCKSTEP_PURE) $(DEV_HDRS)
+	@$(CC) $(PLANT_CFLAGS) $(DEV_INCS) -o $@ $< $(LOCKSTEP_PURE) -lm
+
 # pdp11-stock too: the reference the benchmark and tests/test_simh_stock.py use.
 ALL_PRODUCTS += $(BUILD)/pdp11 $(BUILD)/pdp11-plain $(BUILD)/pdp11-timed $(BUILD)/plant_test $(BUILD)/gripper_test $(BUILD)/pdp11-stock \
-                $(BUILD)/lockstep-coordinator $(BUILD)/lockstep_test $(BUILD)/barrier-bench
+                $(BUILD)/lockstep-coordinator $(BUILD)/lockstep_test $(BUILD)/plant_command_test $(BUILD)/barrier-bench
 
 bench-devices: $(BUILD)/pdp11 $(BUILD)/pdp11-plain $(BUILD)/pdp11-guided $(BUILD)/pdp11-stock $(BUILD)/kernel.lda $(PRISTINE_DSK) venv  ## the C devices' cost: plain, guided and stock builds
 	@$(PY) -m harness.bench.bench_devices

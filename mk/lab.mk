@@ -30,9 +30,10 @@ lab-browser:  ## install Debian's chromium and chromium-driver for the lab's tes
 	@bash mk/apt-need.sh chromium chromium-driver || echo "==> chromium could not be installed: the browser tests will skip"
 test: lab-browser
 
-test-browser: $(LAB_NEEDS) $(PRISTINE_DSK) lab-browser  ## every lab browser session whole (make test keeps a short one)
+test-browser: $(LAB_NEEDS) $(PRISTINE_DSK) $(BUILD)/lockstep-coordinator $(BUILD)/kernel-1103.lda lab-browser  ## every lab browser session whole, and the page of the five machines (make test keeps a short one)
 	@LAB_BROWSER_FULL=1 $(PY) -m pytest -q -rs -n $(TEST_WORKERS) --dist loadscope tests/lab/test_browser.py \
-	  tests/lab/test_browser_program.py tests/lab/test_browser_two_labs.py
+	  tests/lab/test_browser_program.py tests/lab/test_browser_two_labs.py \
+	  tests/controllers/test_five_plant_browser.py
 
 test-lab-long: $(LAB_NEEDS) $(PRISTINE_DSK) lab-browser  ## the long lab browser session (not in make test)
 	@LAB_LONG=1 $(PY) -m pytest -q tests/lab/test_long_session.py

@@ -5,6 +5,7 @@
 
 #include "pdp11_defs.h"
 #include "plant.h"
+#include "plant_command.h"
 #include "gripper.h"
 #include "plant_row.h"
 #include "link.h"
@@ -60,6 +61,11 @@ void lockstep_dac (int channel, int code);
 void lockstep_run_lines (int lines);
 uint16 lockstep_counter (void);
 void lockstep_rate_changed (int32 old_rate);
+/* SET PLANT among the five: checked now, applied by the coordinator at the next
+   boundary (NULL), or why not; SHOW PLANT's plant: the coordinator's at the last
+   boundary with those settings applied (returns how many are still to come). */
+const char *lockstep_plant_command (const plant_command *c);
+int lockstep_plant_shown (plant *pl, int *sample_hz);
 void link_dev_configure (int links);              /* 0 (absent), 1 (11/03), 4 (11/23) */
 link_wire link_dev_take_wire (int i);
 void link_dev_deliver (int i, link_wire w);

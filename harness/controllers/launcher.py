@@ -92,8 +92,9 @@ class Launch:
                 f"controllers console {name} (^] leaves it, ^E gives its sim>)")
         say(f"this terminal is the 11/23's console; {' then '.join(MAIN_BOOT_LINES)} gives it "
             "the words that drive the axes through the 11/03s")
-        say("the plant is the coordinator's (its rack switched on): SET PLANT at this sim> "
-            "changes only the 11/23's own plant, which nothing drives in this mode")
+        say("the plant is the coordinator's, its rack switched on: SET PLANT and SHOW PLANT "
+            "at any machine's sim> act on it (^E, SET PLANT POWER=OFF, CONT: the axes stop "
+            "being driven at the next 1 ms boundary)")
         extra = {"busy_wait": busy_wait} if busy_wait else {}
         return session(PDP11, disk, fast=fast, kernel=KERNEL, rack_hint=False,
                        log=self.directory / "main.log",

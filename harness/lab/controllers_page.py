@@ -1,6 +1,7 @@
 """The lab's page for the five machines of issue 21 (`make run CONTROLLERS=4 LAB=1`,
 python -m harness controllers launch --lab): each machine's state and the tail
-of its console, and the servo table per axis (controllers_view.py), refreshed
+of its console, the amplifier rack's power (on or off: SET PLANT POWER at any
+machine's sim>), and the servo table per axis (controllers_view.py), refreshed
 twice a second from the lock-step's status file and the 11/03s' console logs.
 
 It only reads: nothing here acts on the machines. The server listens on
@@ -34,7 +35,10 @@ def read_view(status_path, directory):
             logs[m] = (directory / f"{m}.log").read_bytes()[-8192:].decode("latin-1")
         except OSError:
             pass
-    return view(status, logs)
+    shown = view(status, logs)
+    if status is not None:            # the rack's switch (SET PLANT POWER at any sim>)
+        shown["rack_on"] = bool(status.get("power", 1))
+    return shown
 
 
 def serve(status_path, directory, port=0):

@@ -11,8 +11,11 @@
    is never longer than the plant's 1 ms grid step; more, shorter ones are
    allowed, for measuring their cost): quantum k ends when every live member has sent its ls_up
    for k; the plant and the links are stepped (lockstep/quantum.c) and each
-   member gets its ls_down. Only the wire is here: sockets, joining, losing.
-   --status FILE: every 100 quanta (and when a member is lost) FILE is
+   member gets its ls_down. SET PLANT typed at any member's sim> reaches
+   this plant with that member's ls_up and is applied at the boundary
+   (quantum.h). Only the wire is here: sockets, joining, losing.
+   --status FILE: every 100 quanta (and when a member is lost or a SET PLANT
+   was applied) FILE is
    replaced (written beside it, renamed) by the status (quantum.h), which the
    lab page shows; it changes nothing in the run.
 
@@ -43,6 +46,7 @@ typedef struct {
     int expected, joined, ready;
     ls_up up;
     ls_event events[LS_MAX_EVENTS];
+    plant_command commands[LS_MAX_COMMANDS];
 } member;
 
 static member members[LS_MEMBERS];
@@ -100,6 +104,7 @@ static void join (ls_world *w, int listener)
     memset (&wel, 0, sizeof wel);
     wel.magic = LS_MAGIC;
     wel.quanta_per_s = w->quanta_per_s;
+    wel.sample_hz = (uint32_t) w->sample_hz;
     wel.pl = w->pl;
     members[h.member].fd = fd;
     members[h.member].joined = 1;
@@ -115,7 +120,9 @@ static void receive (ls_world *w, int m, uint64_t k)
         return;
     }
     if (mb->up.quantum != k || mb->up.n_events > LS_MAX_EVENTS
-        || !ls_io_full (mb->fd, mb->events, mb->up.n_events * sizeof (ls_event), 0)) {
+        || mb->up.n_commands > LS_MAX_COMMANDS
+        || !ls_io_full (mb->fd, mb->events, mb->up.n_events * sizeof (ls_event), 0)
+        || !ls_io_full (mb->fd, mb->commands, mb->up.n_commands * sizeof (plant_command), 0)) {
         lose (w, m, "broke the protocol");
         return;
     }
@@ -226,19 +233,21 @@ int main (int argc, char **argv)
     for (uint64_t k = 1;; k++) {
         const ls_up *ups[LS_MEMBERS];
         const ls_event *events[LS_MEMBERS];
+        const plant_command *commands[LS_MEMBERS];
         gather (&w, listener, k, join_timeout_s * 1000);
         for (int m = 0; m < LS_MEMBERS; m++) {
             ups[m] = members[m].ready ? &members[m].up : NULL;
             events[m] = members[m].events;
+            commands[m] = members[m].commands;
         }
-        ls_world_step (&w, k, ups, events, downs);
+        int set = ls_world_step (&w, k, ups, events, commands, downs);
         for (int m = 0; m < LS_MEMBERS; m++) {
             if (!members[m].ready) continue;
             members[m].ready = 0;
             if (!ls_io_full (members[m].fd, &downs[m], sizeof downs[m], 1))
                 lose (&w, m, "lost (its connection closed)");
         }
-        if (k % STATUS_EVERY == 0 || w.live != status_live) {
+        if (k % STATUS_EVERY == 0 || w.live != status_live || set) {
             write_status (&w, k);
             status_live = w.live;
         }

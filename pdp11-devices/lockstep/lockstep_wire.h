@@ -9,9 +9,12 @@
      coordinator -> member  ls_welcome (the quantum, the plant at time 0)
    At the end of quantum k (simulated time k / quanta_per_s) every member:
      member -> coordinator  ls_up, then n_events ls_event (its DAC writes and
-                            run-line changes in the quantum, times exact)
+                            run-line changes in the quantum, times exact),
+                            then n_commands plant_command (SET PLANT typed at
+                            its sim> in the quantum: applied at the boundary)
      coordinator -> member  ls_down: the plant at the boundary, what crossed
-                            its links, which peers are lost, or the end
+                            its links, which peers are lost, or the end; how
+                            many of its SETs the boundary refused
    A member waits for its ls_down before it runs quantum k + 1: no member
    starts a quantum before every live member has finished the one before. */
 #ifndef LOCKSTEP_WIRE_H
@@ -21,6 +24,7 @@
 #include <stdint.h>
 
 #include "plant.h"
+#include "plant_command.h"
 #include "link.h"
 
 #define LS_MAGIC       0x4c533231u       /* "LS21" */
@@ -29,6 +33,7 @@
 #define LS_LINKS       4                 /* the 11/23 has one per axis; an 11/03 uses [0] */
 #define LS_QUANTA_PER_S 1000             /* 1 simulated ms: the plant's grid step */
 #define LS_MAX_EVENTS  1024              /* per member and quantum */
+#define LS_MAX_COMMANDS 32               /* SET PLANT settings per member and quantum */
 #define LS_END         1u                /* ls_down.flags: the session is over */
 
 enum { LS_EV_DAC, LS_EV_RUN };
@@ -45,18 +50,21 @@ typedef struct {
 
 typedef struct {
     uint32_t magic, quanta_per_s;
+    uint32_t sample_hz, pad;
     plant pl;
 } ls_welcome;
 
 typedef struct {
     uint64_t quantum;
-    uint32_t n_events, pad;
+    uint32_t n_events, n_commands;
     link_wire links[LS_LINKS];
 } ls_up;
 
 typedef struct {
     uint64_t quantum;
     uint32_t flags, lost;                /* lost: bit a = the 11/03 of axis a is gone */
+    uint32_t refused;                    /* this member's SETs of the quantum not applied */
+    uint32_t sample_hz;                  /* the trace's samples per second (SHOW PLANT) */
     link_wire links[LS_LINKS];
     plant pl;
 } ls_down;

@@ -38,7 +38,7 @@ static void samples_until (ls_world *w, double t)
     if (!w->trace || w->sample_hz <= 0)
         return;
     for (;;) {
-        double ts = (double) w->samples / w->sample_hz;
+        double ts = w->sample_t0 + (double) w->samples / w->sample_hz;
         if (ts > t)
             return;
         plant_advance (&w->pl, ts);
@@ -103,8 +103,9 @@ static void history_json (FILE *f, const ls_history *h)
 void ls_world_status (FILE *f, const ls_world *w, uint64_t k)
 {
     static const char *const names[LS_MEMBERS] = { "x", "y", "z", "t", "main" };
-    fprintf (f, "{\"quantum\":%llu,\"time_s\":%.6f,\"members\":{", (unsigned long long) k,
-             (double) k / w->quanta_per_s);
+    fprintf (f, "{\"quantum\":%llu,\"time_s\":%.6f,\"power\":%d,\"seed\":%llu,\"sample\":%d,"
+             "\"members\":{", (unsigned long long) k, (double) k / w->quanta_per_s, w->pl.power,
+             (unsigned long long) w->pl.seed, w->sample_hz);
     for (int m = 0; m < LS_MEMBERS; m++)
         fprintf (f, "%s\"%s\":\"%s\"", m ? "," : "", names[m],
                  !(w->expected & (1u << m)) ? "absent" : (w->live & (1u << m)) ? "running" : "lost");
@@ -122,11 +123,27 @@ void ls_world_status (FILE *f, const ls_world *w, uint64_t k)
     fprintf (f, "]}\n");
 }
 
-void ls_world_step (ls_world *w, uint64_t k, const ls_up *const ups[LS_MEMBERS],
-                    const ls_event *const events[LS_MEMBERS], ls_down downs[LS_MEMBERS])
+/* One member's SET PLANT settings at the boundary t: 1 applied, 0 refused. */
+static int apply_command (ls_world *w, const plant_command *c, double t)
+{
+    if (plant_command_apply (&w->pl, c) != NULL)
+        return 0;
+    if (c->kind == PC_SAMPLE) {                  /* the next sample one period after t */
+        w->sample_hz = (int) c->value;
+        w->sample_t0 = t;
+        w->samples = 1;
+    }
+    return 1;
+}
+
+int ls_world_step (ls_world *w, uint64_t k, const ls_up *const ups[LS_MEMBERS],
+                   const ls_event *const events[LS_MEMBERS],
+                   const plant_command *const commands[LS_MEMBERS], ls_down downs[LS_MEMBERS])
 {
     double t_end = (double) k / w->quanta_per_s;
     link_wire none = { 0 };
+    uint32_t refused[LS_MEMBERS] = { 0 };
+    int applied = 0;
     apply_events (w, ups, events);
     for (int a = 0; a < LS_LINKS; a++) {
         if (ups[LS_MAIN]) remember (&w->to_axis[a], ups[LS_MAIN]->links[a], k);
@@ -134,11 +151,19 @@ void ls_world_step (ls_world *w, uint64_t k, const ls_up *const ups[LS_MEMBERS],
     }
     samples_until (w, t_end);
     plant_advance (&w->pl, t_end);
+    for (int m = 0; m < LS_MEMBERS; m++)
+        for (uint32_t i = 0; ups[m] && commands[m] && i < ups[m]->n_commands; i++) {
+            int ok = apply_command (w, &commands[m][i], t_end);
+            applied += ok;
+            refused[m] += !ok;
+        }
     for (int m = 0; m < LS_MEMBERS; m++) {
         ls_down *d = &downs[m];
         memset (d, 0, sizeof *d);
         d->quantum = k;
         d->pl = w->pl;
+        d->refused = refused[m];
+        d->sample_hz = (uint32_t) w->sample_hz;
         if (m == LS_MAIN) {
             d->lost = w->expected & ~w->live & ((1u << LS_LINKS) - 1);
             for (int a = 0; a < LS_LINKS; a++)
@@ -149,4 +174,5 @@ void ls_world_step (ls_world *w, uint64_t k, const ls_up *const ups[LS_MEMBERS],
                 d->flags |= LS_END;
         }
     }
+    return applied;
 }

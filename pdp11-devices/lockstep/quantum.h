@@ -11,7 +11,15 @@
    each live member's ls_down gets the plant, what its link peers did, and
    the lost 11/03s (expected, no longer live: for the 11/23) or LS_END (for an 11/03 whose 11/23 is
    gone). An event for an axis other than the member's own is ignored: an
-   11/03 drives only its axis, the 11/23 none. */
+   11/03 drives only its axis, the 11/23 none.
+   Then, at the boundary, the SET PLANT settings the members sent with their
+   ls_up (commands[m], ups[m]->n_commands of them) are applied in member
+   order, each with plant_command_apply's checks: any member may set the one
+   plant (the rack's power, an axis's parameters, the seed, the trace's
+   sample rate); a setting the plant refuses (another member's setting of
+   the same quantum came first) changes nothing and counts in that member's
+   ls_down.refused. Every member's ls_down carries the plant after them.
+   Returns the number of settings applied. */
 #ifndef QUANTUM_H
 #define QUANTUM_H
 
@@ -33,7 +41,8 @@ typedef struct {
     gripper gr;                 /* not driven in this mode; its columns stay in the row */
     FILE *trace;                /* NULL: no trace */
     int sample_hz;              /* 0: rows at DAC writes only */
-    uint64_t samples;           /* sample rows written */
+    double sample_t0;           /* sample i falls at sample_t0 + i / sample_hz */
+    uint64_t samples;           /* sample rows written since sample_t0 */
     int quanta_per_s;
     uint32_t expected;          /* bit m: member m is one of this session's */
     uint32_t live;              /* bit m: member m takes part (expected, not lost) */
@@ -42,10 +51,12 @@ typedef struct {
 
 void ls_world_init (ls_world *w, uint64_t seed, int sample_hz, FILE *trace);
 /* The status after quantum k, one JSON object (the lab page's view of the five
-   machines): time, each member taking part or lost, per axis the plant's state
+   machines): time, each member taking part or lost, the rack's power, the
+   seed and the sample rate, per axis the plant's state
    and the words that last crossed its link each way, with their quanta. */
 void ls_world_status (FILE *f, const ls_world *w, uint64_t k);
-void ls_world_step (ls_world *w, uint64_t k, const ls_up *const ups[LS_MEMBERS],
-                    const ls_event *const events[LS_MEMBERS], ls_down downs[LS_MEMBERS]);
+int ls_world_step (ls_world *w, uint64_t k, const ls_up *const ups[LS_MEMBERS],
+                   const ls_event *const events[LS_MEMBERS],
+                   const plant_command *const commands[LS_MEMBERS], ls_down downs[LS_MEMBERS]);
 
 #endif

@@ -32,6 +32,13 @@
    the parameters, then a line for the gripper (opening, object, contact,
    step pulses requested, missed, blocked, pull-out rate, its two lines,
    and where a placed part is).
+   With a lock-step role (simh/lockstep_dev.c: the five machines) this
+   simulator's own plant stands still and SET and SHOW act on the one plant
+   the coordinator steps: a setting is checked at once and applied at the
+   next quantum boundary; SHOW shows that plant at the last boundary.
+   Refused there, with why: GRIPPER (none among the five), HINT (this
+   console's hint watches this machine's D/A writes; the 11/03s make them),
+   ATTACH PLANT (the trace is the coordinator's).
    SHOW PLANT LAYOUT (only when named), for programs: the row's columns, then
    per axis its letter, display unit, counts per unit and end stops:
      columns time_s,axis,dac,vcmd,vel,pos,counter,grip,contact,missed
@@ -51,7 +58,6 @@
 
 #define DEFAULT_SEED   1983
 #define DEFAULT_SAMPLE 60
-#define SAMPLE_MAX     1000
 
 plant robot_plant;
 gripper robot_gripper;
@@ -71,6 +77,7 @@ static t_stat plant_set_gripper (UNIT *uptr, int32 which, char *cptr, void *desc
 static t_stat plant_set_seed (UNIT *uptr, int32 val, char *cptr, void *desc);
 static t_stat plant_set_sample (UNIT *uptr, int32 val, char *cptr, void *desc);
 static t_stat plant_set_power_switch (UNIT *uptr, int32 val, char *cptr, void *desc);
+static const char *power_setting (int on);
 static t_stat plant_show_global (FILE *st, UNIT *uptr, int32 val, void *desc);
 static t_stat plant_show_axes (FILE *st, UNIT *uptr, int32 val, void *desc);
 static t_stat plant_show_layout (FILE *st, UNIT *uptr, int32 val, void *desc);
@@ -249,6 +256,11 @@ static t_stat plant_reset (DEVICE *dptr)    /* bus INIT does not move the robot 
 static t_stat plant_attach (UNIT *uptr, char *cptr)
 {
     t_stat r;
+    if (lockstep_role != LOCKSTEP_NONE) {
+        printf ("PLANT: among the five machines the trace is the coordinator's "
+                "(make run CONTROLLERS=4 TRACE=file)\n");
+        return SCPE_ARG;
+    }
     if (uptr->flags & UNIT_ATT)
         plant_detach (uptr);
     if ((r = device_attach_text (uptr, cptr, "PLANT: cannot write the trace")) != SCPE_OK)
@@ -282,14 +294,46 @@ static t_stat plant_select (UNIT *uptr, int32 axis, char *cptr, void *desc)
         printf ("PLANT: an axis letter or GRIPPER takes no value (SET PLANT X TAU=20)\n");
         return SCPE_ARG;
     }
+    if (axis == SEL_GRIPPER && lockstep_role != LOCKSTEP_NONE) {
+        printf ("PLANT: no gripper among the five machines (docs/controllers.md): nothing to set\n");
+        return SCPE_ARG;
+    }
     sel_axis = axis;
     return SCPE_OK;
+}
+
+/* A setting for the plant: this simulator's own, at once, or with a lock-step
+   role the coordinator's, at the next boundary. NULL, or why not (nothing
+   changed). */
+static const char *apply_setting (const plant_command *c)
+{
+    const char *why;
+    if (lockstep_role != LOCKSTEP_NONE)
+        return lockstep_plant_command (c);
+    if (c->kind == PC_SAMPLE) {                 /* the trace's, not the plant's */
+        if ((why = plant_command_apply (&robot_plant, c)) != NULL)
+            return why;
+        sample_hz = (int32) c->value;
+        schedule_sample ();
+        return NULL;
+    }
+    plant_dev_catch_up ();                       /* what happened so far, with the old state */
+    return plant_command_apply (&robot_plant, c);
+}
+
+static t_stat refused (const char *why)
+{
+    if (why == NULL)
+        return SCPE_OK;
+    printf ("PLANT: %s\n", why);
+    return SCPE_ARG;
 }
 
 static t_stat plant_set (UNIT *uptr, int32 which, char *cptr, void *desc)
 {
     double x;
     const char *why;
+    plant_command c = { PC_PARAM, 0, 0, 0, 0.0, 0 };
     if (sel_axis == SEL_GRIPPER) {
         printf ("PLANT: %s is an axis parameter; the gripper has OBJECT, PULLOUT and OPENING\n",
                 plant_param_names[which]);
@@ -305,8 +349,10 @@ static t_stat plant_set (UNIT *uptr, int32 which, char *cptr, void *desc)
                 plant_axis_names[sel_axis], plant_param_names[which]);
         return SCPE_ARG;
     }
-    plant_dev_catch_up ();
-    if ((why = plant_set_param (&robot_plant, sel_axis, (plant_param) which, x)) != NULL) {
+    c.axis = (uint32_t) sel_axis;
+    c.which = (uint32_t) which;
+    c.value = x;
+    if ((why = apply_setting (&c)) != NULL) {
         printf ("PLANT %c: %s\n", plant_axis_names[sel_axis], why);
         return SCPE_ARG;
     }
@@ -347,28 +393,28 @@ static t_stat plant_set_seed (UNIT *uptr, int32 val, char *cptr, void *desc)
 {
     char *end;
     unsigned long long s;
+    plant_command c = { PC_SEED, 0, 0, 0, 0.0, 0 };
     if (cptr == NULL || *cptr == 0 || *cptr == '-' ||
         (errno = 0, s = strtoull (cptr, &end, 10), *end != 0) || errno) {
         printf ("PLANT: SEED needs a whole number >= 0\n");
         return SCPE_ARG;
     }
-    plant_dev_catch_up ();
-    plant_reseed (&robot_plant, (uint64_t) s);
-    return SCPE_OK;
+    c.seed = (uint64_t) s;
+    return refused (apply_setting (&c));
 }
 
 static t_stat plant_set_sample (UNIT *uptr, int32 val, char *cptr, void *desc)
 {
     char *end;
     long n;
+    plant_command c = { PC_SAMPLE, 0, 0, 0, 0.0, 0 };
     if (cptr == NULL || *cptr == 0 || (n = strtol (cptr, &end, 10), *end != 0) ||
-        n < 0 || n > SAMPLE_MAX) {
-        printf ("PLANT: SAMPLE needs a whole number of samples per second, 0..%d\n", SAMPLE_MAX);
+        n < 0 || n > PLANT_SAMPLE_MAX) {
+        printf ("PLANT: SAMPLE needs a whole number of samples per second, 0..%d\n", PLANT_SAMPLE_MAX);
         return SCPE_ARG;
     }
-    sample_hz = (int32) n;
-    schedule_sample ();
-    return SCPE_OK;
+    c.value = (double) n;
+    return refused (apply_setting (&c));
 }
 
 static t_stat plant_set_power_switch (UNIT *uptr, int32 val, char *cptr, void *desc)
@@ -383,62 +429,107 @@ static t_stat plant_set_power_switch (UNIT *uptr, int32 val, char *cptr, void *d
                     : "PLANT: POWER is ON or OFF (the amplifier rack's switch)\n");
         return SCPE_ARG;
     }
-    if (val)                                    /* SET PLANT HINT (rack_hint.c) */
-        rack_hint_enable (on);
-    else
-        plant_dev_power (on);
+    if (!val)
+        return refused (power_setting (on));
+    if (lockstep_role != LOCKSTEP_NONE) {       /* SET PLANT HINT (rack_hint.c) */
+        printf ("PLANT: no HINT among the five machines (the 11/03s write the D/As); "
+                "SHOW PLANT gives the rack's power\n");
+        return SCPE_ARG;
+    }
+    rack_hint_enable (on);
     return SCPE_OK;
+}
+
+static const char *power_setting (int on)
+{
+    plant_command c = { PC_POWER, 0, 0, 0, on ? 1.0 : 0.0, 0 };
+    return apply_setting (&c);
 }
 
 void plant_dev_power (int on)
 {
-    plant_dev_catch_up ();                       /* what happened so far, with the old state */
-    plant_set_power (&robot_plant, on);
+    const char *why = power_setting (on);
+    if (why != NULL)
+        printf ("PLANT: %s\n", why);
+}
+
+/* The plant SHOW describes: this simulator's (as last caught up); or the
+   coordinator's at the last boundary, with this member's settings still to
+   come (their number). */
+static const plant *shown (plant *scratch, int *hz, int *to_come)
+{
+    if (lockstep_role != LOCKSTEP_NONE) {
+        *to_come = lockstep_plant_shown (scratch, hz);
+        return scratch;
+    }
+    *hz = sample_hz;
+    *to_come = 0;
+    return &robot_plant;
 }
 
 int plant_dev_powered (void)
 {
-    return robot_plant.power;
+    plant scratch;
+    int hz, to_come;
+    return shown (&scratch, &hz, &to_come)->power;
 }
 
 static t_stat plant_show_global (FILE *st, UNIT *uptr, int32 val, void *desc)
 {
-    fprintf (st, "seed=%llu, sample=%d/s, power=%s, time=%.6fs", (unsigned long long) robot_plant.seed,
-             sample_hz, robot_plant.power ? "on" : "off", clock_time ());
+    plant scratch;
+    int hz, to_come;
+    const plant *pl = shown (&scratch, &hz, &to_come);
+    fprintf (st, "seed=%llu, sample=%d/s, power=%s, time=%.6fs", (unsigned long long) pl->seed,
+             hz, pl->power ? "on" : "off", lockstep_role != LOCKSTEP_NONE ? pl->now : clock_time ());
+    if (lockstep_role != LOCKSTEP_NONE)
+        fprintf (st, "\n  (the lock-step coordinator's plant at its last boundary%s)",
+                 to_come ? "; the SETs typed since shown, applied at the next" : "");
     return SCPE_OK;
 }
 
 static t_stat plant_show_layout (FILE *st, UNIT *uptr, int32 val, void *desc)
 {
+    plant scratch;
+    int hz, to_come;
+    const plant *pl = shown (&scratch, &hz, &to_come);
     fprintf (st, "columns %s\n", plant_row_columns);
     for (int i = 0; i < PLANT_AXES; i++)
         fprintf (st, "axis %c %s %.9g %.9g %.9g\n", plant_axis_names[i], plant_unit_name (i),
-                 plant_counts_per_unit (i), plant_get_param (&robot_plant, i, P_PMIN),
-                 plant_get_param (&robot_plant, i, P_PMAX));
+                 plant_counts_per_unit (i), plant_get_param (pl, i, P_PMIN),
+                 plant_get_param (pl, i, P_PMAX));
     return SCPE_OK;
 }
 
 static t_stat plant_show_axes (FILE *st, UNIT *uptr, int32 val, void *desc)
 {
-    plant_dev_catch_up ();
+    plant scratch;
+    int hz, to_come;
+    const plant *pl;
+    if (lockstep_role == LOCKSTEP_NONE)
+        plant_dev_catch_up ();
+    pl = shown (&scratch, &hz, &to_come);
     /* under 80 columns a line: SHOW PLANT is read on 80-column terminals and the lab page */
     fprintf (st, "\n  ax  pos(counts) position     vel(c/s) dac  vcmd(c/s) offset stop run counter");
     for (int i = 0; i < PLANT_AXES; i++) {
-        const plant_axis *a = &robot_plant.ax[i];
-        int stop = plant_at_stop (&robot_plant, i);
+        const plant_axis *a = &pl->ax[i];
+        int stop = plant_at_stop (pl, i);
         fprintf (st, "\n  %c %12.3f %8.4f %-3s %9.3f %04d %10.3f %7.3f %-5s %d %6d",
                  plant_axis_names[i], a->p, a->p / plant_counts_per_unit (i), plant_unit_name (i),
-                 a->v, a->code, plant_vcmd (&robot_plant, i), plant_offset (&robot_plant, i),
+                 a->v, a->code, plant_vcmd (pl, i), plant_offset (pl, i),
                  stop > 0 ? "upper" : (stop < 0 ? "lower" : "-"), a->run,
-                 (int) (int16) plant_counter (&robot_plant, i));
+                 (int) (int16) plant_counter (pl, i));
     }
     fprintf (st, "\n  axis  KV        TAU(ms)  AMAX       VMAX      PMIN       PMAX       WALK");
     for (int i = 0; i < PLANT_AXES; i++)
         fprintf (st, "\n  %c     %-9g %-8g %-10g %-9g %-10g %-10g %g", plant_axis_names[i],
-                 plant_get_param (&robot_plant, i, P_KV), plant_get_param (&robot_plant, i, P_TAU),
-                 plant_get_param (&robot_plant, i, P_AMAX), plant_get_param (&robot_plant, i, P_VMAX),
-                 plant_get_param (&robot_plant, i, P_PMIN), plant_get_param (&robot_plant, i, P_PMAX),
-                 plant_get_param (&robot_plant, i, P_WALK));
+                 plant_get_param (pl, i, P_KV), plant_get_param (pl, i, P_TAU),
+                 plant_get_param (pl, i, P_AMAX), plant_get_param (pl, i, P_VMAX),
+                 plant_get_param (pl, i, P_PMIN), plant_get_param (pl, i, P_PMAX),
+                 plant_get_param (pl, i, P_WALK));
+    if (lockstep_role != LOCKSTEP_NONE) {
+        fprintf (st, "\n  gripper  none among the five machines");
+        return SCPE_OK;
+    }
     fprintf (st, "\n  gripper  opening %.2f in (%d steps), object %.3f in, contact %d,"
              "\n           pulses %lu, missed %lu, blocked %lu, pullout %g steps/s, step %d dir %d",
              gripper_opening (&robot_gripper), robot_gripper.steps, robot_gripper.object_in,

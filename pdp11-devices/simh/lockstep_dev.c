@@ -30,6 +30,16 @@
    host thread: while another member is stopped (at its sim>), this one
    waits at its boundary and simulated time stands still for all.
 
+   SET PLANT and SHOW PLANT on any member act on the coordinator's plant
+   (plant_dev.c asks lockstep_plant_command and lockstep_plant_shown): a
+   setting is checked at once against that plant as of the last boundary
+   (with this member's earlier settings of the quantum), refused there with
+   the plant's own message, or kept and sent with this quantum's events, to
+   be applied by the coordinator at the boundary that ends the quantum: the
+   same simulated moment for every member, however long this one stood at
+   its sim>. SHOW PLANT shows that plant as of the last boundary (its state
+   is the coordinator's, exactly), the settings still to come applied.
+
    The 11/23 prints one line at its console when an 11/03 is lost ("11/03
    axis y stopped: ...") and its link's CSR bit 8 sets; an 11/03 whose
    coordinator or 11/23 is gone stops at sim> with a message. */
@@ -46,6 +56,10 @@ extern int32 sim_is_running;
 int lockstep_role = LOCKSTEP_NONE;
 static const char *const role_names[] = { "X", "Y", "Z", "T", "MAIN" };
 static plant local;                      /* the plant as of the last boundary, then advanced */
+static plant boundary;                   /* the coordinator's plant at the last boundary */
+static uint32 boundary_sample_hz;        /* its trace's samples per second */
+static plant_command pending[LS_MAX_COMMANDS];   /* SET PLANT of this quantum */
+static int n_pending;
 static int sock = -1;
 static ls_up up;
 static ls_event events[LS_MAX_EVENTS];
@@ -78,6 +92,8 @@ DEVICE lockstep_dev = {
 static void reset_local (void)
 {
     plant_init (&local, 1983);            /* replaced by the coordinator's at ATTACH */
+    boundary = local;
+    n_pending = 0;
 }
 
 static t_stat ls_set_role (UNIT *uptr, int32 val, char *cptr, void *desc)
@@ -134,7 +150,9 @@ static t_stat ls_attach (UNIT *uptr, char *cptr)
         sock = -1;
         return SCPE_OPENERR;
     }
-    local = wel.pl;
+    local = boundary = wel.pl;
+    boundary_sample_hz = wel.sample_hz;
+    n_pending = 0;
     quanta_per_s = (int32) wel.quanta_per_s;
     quantum_acc = 0;
     memset (&up, 0, sizeof up);
@@ -182,14 +200,23 @@ static t_stat ls_svc (UNIT *uptr)
     up.quantum++;
     for (int i = 0; i < LS_LINKS; i++)
         up.links[i] = link_dev_take_wire (i);
+    up.n_commands = (uint32_t) n_pending;
     if (!ls_io_full (sock, &up, sizeof up, 1) || !ls_io_full (sock, events, n * sizeof (ls_event), 1)
+        || !ls_io_full (sock, pending, n_pending * sizeof (plant_command), 1)
         || !ls_io_full (sock, &down, sizeof down, 0) || down.quantum != up.quantum) {
         ls_detach (uptr);
         printf ("\r\nLOCKSTEP: the coordinator is gone; this machine stops\r\n");
         return SCPE_STOP;
     }
     up.n_events = 0;
-    local = down.pl;
+    n_pending = 0;
+    local = boundary = down.pl;
+    boundary_sample_hz = down.sample_hz;
+    if (down.refused) {
+        printf ("\r\nPLANT: %u SET PLANT setting(s) from this sim> refused at the boundary: "
+                "another machine's SET of the same quantum came first (SHOW PLANT)\r\n", down.refused);
+        fflush (stdout);
+    }
     for (int i = 0; i < LS_LINKS; i++)
         link_dev_deliver (i, down.links[i]);
     if (lockstep_role == LS_MAIN)
@@ -244,6 +271,34 @@ uint16 lockstep_counter (void)
         return 0;
     plant_advance (&local, clock_time ());
     return plant_counter (&local, lockstep_role);
+}
+
+const char *lockstep_plant_command (const plant_command *c)
+{
+    plant after;
+    int hz;
+    const char *why;
+    if (!(ls_unit.flags & UNIT_ATT))
+        return "this machine has no lock-step coordinator now (ATTACH LOCKSTEP joins one)";
+    if (n_pending == LS_MAX_COMMANDS)
+        return "too many settings before the next boundary: CONT a moment, then SET again";
+    lockstep_plant_shown (&after, &hz);
+    if ((why = plant_command_apply (&after, c)) != NULL)
+        return why;
+    pending[n_pending++] = *c;
+    return NULL;
+}
+
+int lockstep_plant_shown (plant *pl, int *sample_hz)
+{
+    *pl = boundary;
+    *sample_hz = (int) boundary_sample_hz;
+    for (int i = 0; i < n_pending; i++) {
+        plant_command_apply (pl, &pending[i]);
+        if (pending[i].kind == PC_SAMPLE)
+            *sample_hz = (int) pending[i].value;
+    }
+    return n_pending;
 }
 
 void lockstep_rate_changed (int32 old_rate)

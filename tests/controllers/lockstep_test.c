@@ -71,6 +71,7 @@ static void world_boundary (void)
     ls_event ev_y[1] = { { 0.0002, LS_EV_DAC, 0, 4000, 0 } };   /* y's machine names x: ignored */
     const ls_up *up_ptrs[LS_MEMBERS];
     const ls_event *ev_ptrs[LS_MEMBERS] = { ev_x, ev_y, NULL, NULL, NULL };
+    const plant_command *no_commands[LS_MEMBERS] = { NULL, NULL, NULL, NULL, NULL };
     char *text = NULL;
     size_t size = 0;
     FILE *trace = open_memstream (&text, &size);
@@ -81,7 +82,7 @@ static void world_boundary (void)
     ups[LS_MAIN].links[2].sent = 1;
     ups[LS_MAIN].links[2].value = 0777;
     ups[2].links[0].taken = 1;
-    ls_world_step (&w, 1, up_ptrs, ev_ptrs, downs);
+    ls_world_step (&w, 1, up_ptrs, ev_ptrs, no_commands, downs);
     CHECK_EQ ("the plant reaches the boundary (us)", (long) (downs[0].pl.now * 1e6 + 0.5), 1000);
     CHECK_EQ ("x's DAC write applied", downs[3].pl.ax[0].code, 3000);
     CHECK_EQ ("x's run line applied", downs[3].pl.ax[0].run, 1);
@@ -106,12 +107,12 @@ static void world_boundary (void)
     w.live &= ~(1u << 1);                       /* y's machine is gone */
     up_ptrs[1] = NULL;
     for (int m = 0; m < LS_MEMBERS; m++) { ups[m] = up_for (2); ups[m].n_events = 0; }
-    ls_world_step (&w, 2, up_ptrs, ev_ptrs, downs);
+    ls_world_step (&w, 2, up_ptrs, ev_ptrs, no_commands, downs);
     CHECK_EQ ("a lost 11/03 is the 11/23's lost bit", downs[LS_MAIN].lost, 2);
     CHECK_EQ ("no END while the 11/23 lives", downs[0].flags & LS_END, 0);
     w.live &= ~(1u << LS_MAIN);
     up_ptrs[LS_MAIN] = NULL;
-    ls_world_step (&w, 3, up_ptrs, ev_ptrs, downs);
+    ls_world_step (&w, 3, up_ptrs, ev_ptrs, no_commands, downs);
     CHECK_EQ ("the 11/23 gone: END for the 11/03s", downs[0].flags & LS_END, LS_END);
     fclose (trace);
     free (text);

@@ -18,6 +18,9 @@ function render(v) {
   if (!v.started) return;
   document.getElementById("time").textContent =
     `simulated time ${v.time_s.toFixed(3)} s (quantum ${v.quantum})`;
+  const rack = document.getElementById("rack");
+  rack.textContent = v.rack_on ? "amplifier rack: on" : "amplifier rack: OFF (no axis is driven)";
+  rack.className = v.rack_on ? "" : "off";
   const machines = document.getElementById("machines");
   machines.replaceChildren(...v.machines.map(m => {
     const div = document.createElement("div");
