@@ -10,11 +10,12 @@ lines); poll() runs the bridge for a moment (the launcher calls it from its
 thread until close()); wait_for(predicate, timeout), from another thread, waits
 until what the polls saw makes predicate() true (a console said something, or
 closed), and wake() has a poll waiting in select look again at once. What a
-machine printed is kept (the last REPLAY bytes, also appended to `name.log`) and replayed to a client when it joins; one client
-per console at a time (a second is told and refused). Keys are queued and
-written when the pty takes them: nothing typed is dropped. A client leaves with
-^] (the machine runs on); ^E there gives that 11/03's sim> (and, as long as it
-stays there, holds all five machines at their next boundary).
+machine printed is kept (the last REPLAY bytes, also appended to `name.log`)
+and replayed to a client when it joins; one client per console at a time (a
+second is told and refused). Keys are queued and written when the pty takes
+them: nothing typed is dropped. A client leaves with ^] (the machine runs on);
+^E there gives that 11/03's sim> (and, as long as it stays there, holds all
+five machines at their next boundary).
 """
 import os
 import select
