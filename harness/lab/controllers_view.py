@@ -6,9 +6,11 @@ console log, turned into one JSON-ready view.
 The servo table per axis is read off the link traffic, decoded with the link
 protocol of docs/controllers.md ("The link protocol"): a command word 122400 +
 code, then its value, answered by the 11/03. Shown per axis: the target last
-sent (Abs.Move.Single), the maximum velocity last sent, the last status answer
-(bit 0 a command executing, bit 1 moving), and from the plant the counter,
-position, velocity and the D/A code the 11/03's servo holds.
+sent (Abs.Move.Single) and the maximum velocity last sent (from the status's
+"sent", the value the coordinator keeps per command: the last eight words are
+soon status polls only, Move.Complete? sends one after another), the last status
+answer (bit 0 a command executing, bit 1 moving), and from the plant the
+counter, position, velocity and the D/A code the 11/03's servo holds.
 """
 COMMAND_BASE = 0o122400
 COMMANDS = {1: "move", 2: "max_vel", 3: "set_up", 4: "status", 5: "counter", 6: "output",
@@ -33,7 +35,8 @@ def commands(to_11_03):
 def servo_row(axis):
     """One axis's line of the servo table."""
     sent = commands(axis["to_11_03"])
-    last = {name: value for _, name, value in sent}
+    last = {COMMANDS[int(code)]: value for code, value in axis["sent"].items()
+            if int(code) in COMMANDS}
     answers = [word for _, word in axis["to_11_23"]]
     status_answers = [a for (_, name, _), a in zip(sent[-len(answers):], answers[-len(sent):])
                       if name == "status"] if sent and answers else []

@@ -88,6 +88,25 @@ static void remember (ls_history *h, link_wire wire, uint64_t k)
     h->word[h->n % LS_HISTORY] = wire.value;
     h->quantum[h->n % LS_HISTORY] = k;
     h->n++;
+    int code = (int) wire.value - LS_COMMAND_BASE;
+    if (h->pending) {
+        h->value[h->pending] = wire.value;
+        h->valued |= 1u << h->pending;
+        h->pending = 0;
+    } else if (code >= 1 && code <= LS_COMMANDS)
+        h->pending = code;
+}
+
+static void values_json (FILE *f, const ls_history *h)
+{
+    int first = 1;
+    fputc ('{', f);
+    for (int c = 1; c <= LS_COMMANDS; c++)
+        if (h->valued & (1u << c)) {
+            fprintf (f, "%s\"%d\":%u", first ? "" : ",", c, h->value[c]);
+            first = 0;
+        }
+    fputc ('}', f);
 }
 
 static void history_json (FILE *f, const ls_history *h)
@@ -116,6 +135,8 @@ void ls_world_status (FILE *f, const ls_world *w, uint64_t k)
                  "\"counter\":%d,\"run\":%d,\"to_11_03\":", a ? "," : "", plant_axis_names[a],
                  x->p, x->v, x->code, (int) (int16_t) plant_counter (&w->pl, a), x->run);
         history_json (f, &w->to_axis[a]);
+        fprintf (f, ",\"sent\":");
+        values_json (f, &w->to_axis[a]);
         fprintf (f, ",\"to_11_23\":");
         history_json (f, &w->to_main[a]);
         fputc ('}', f);

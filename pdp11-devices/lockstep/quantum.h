@@ -29,11 +29,20 @@
 #include "lockstep_wire.h"
 
 #define LS_HISTORY 8                    /* link words kept per axis and direction */
+/* The link protocol's command words (docs/controllers.md "The link protocol"):
+   LS_COMMAND_BASE + code, code 1..LS_COMMANDS, each followed by its value. */
+#define LS_COMMAND_BASE 0122400
+#define LS_COMMANDS 7
 
 typedef struct {                        /* the last words that crossed one way */
     uint16_t word[LS_HISTORY];
     uint64_t quantum[LS_HISTORY];
     int n;                              /* words ever; the newest at (n - 1) % LS_HISTORY */
+    /* 11/23 -> 11/03 only: the value last sent with each command, kept however many
+       words followed (the eight above are soon status polls only) */
+    int pending;                        /* 0, or the command whose value comes next */
+    uint16_t value[LS_COMMANDS + 1];
+    uint32_t valued;                    /* bit c: value[c] has been sent */
 } ls_history;
 
 typedef struct {
@@ -53,7 +62,8 @@ void ls_world_init (ls_world *w, uint64_t seed, int sample_hz, FILE *trace);
 /* The status after quantum k, one JSON object (the lab page's view of the five
    machines): time, each member taking part or lost, the rack's power, the
    seed and the sample rate, per axis the plant's state
-   and the words that last crossed its link each way, with their quanta. */
+   and the words that last crossed its link each way, with their quanta, and the
+   value last sent with each link command ("sent": code -> value). */
 void ls_world_status (FILE *f, const ls_world *w, uint64_t k);
 int ls_world_step (ls_world *w, uint64_t k, const ls_up *const ups[LS_MEMBERS],
                    const ls_event *const events[LS_MEMBERS],

@@ -118,10 +118,42 @@ static void world_boundary (void)
     free (text);
 }
 
+/* The 11/23 sends x a move (command 1, value 2000), then polls its status ten
+   times: the move's words leave the eight-word history, its value stays in "sent". */
+static void sent_values_outlive_the_history (void)
+{
+    ls_world w;
+    static ls_down downs[LS_MEMBERS];
+    ls_up ups[LS_MEMBERS];
+    const ls_up *up_ptrs[LS_MEMBERS];
+    const ls_event *no_events[LS_MEMBERS] = { NULL, NULL, NULL, NULL, NULL };
+    const plant_command *no_commands[LS_MEMBERS] = { NULL, NULL, NULL, NULL, NULL };
+    uint16_t words[22] = { LS_COMMAND_BASE + 1, 2000 };
+    for (int i = 2; i < 22; i += 2) { words[i] = LS_COMMAND_BASE + 4; words[i + 1] = 0; }
+    ls_world_init (&w, 1983, 0, NULL);
+    for (uint64_t k = 1; k <= 22; k++) {
+        for (int m = 0; m < LS_MEMBERS; m++) { ups[m] = up_for (k); up_ptrs[m] = &ups[m]; }
+        ups[LS_MAIN].links[0].sent = 1;
+        ups[LS_MAIN].links[0].value = words[k - 1];
+        ls_world_step (&w, k, up_ptrs, no_events, no_commands, downs);
+    }
+    char *status = NULL;
+    size_t size = 0;
+    FILE *sf = open_memstream (&status, &size);
+    ls_world_status (sf, &w, 22);
+    fclose (sf);
+    CHECK_EQ ("the move's words have left the history", strstr (status, "[1,42241]") == NULL, 1);
+    CHECK_EQ ("x's sent values: the move's 2000 and the last status poll's 0",
+              strstr (status, "\"sent\":{\"1\":2000,\"4\":0}") != NULL, 1);
+    CHECK_EQ ("y was sent nothing", strstr (status, "\"sent\":{}") != NULL, 1);
+    free (status);
+}
+
 int main (void)
 {
     link_handshake ();
     world_boundary ();
+    sent_values_outlive_the_history ();
     printf ("%d checks, %d failed\n", checks, failures);
     return failures != 0;
 }

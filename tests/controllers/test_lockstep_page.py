@@ -11,14 +11,14 @@ from harness.lab.controllers_view import servo_row, view
 MOVE, STATUS = 0o122401, 0o122404
 
 
-def axis(to_11_03, to_11_23, letter="X"):
+def axis(to_11_03, to_11_23, letter="X", sent=None):
     return {"axis": letter, "pos": 1999.5, "vel": 0.0, "dac": 2049, "counter": 1999, "run": 1,
-            "to_11_03": to_11_03, "to_11_23": to_11_23}
+            "to_11_03": to_11_03, "to_11_23": to_11_23, "sent": sent or {}}
 
 
 def test_the_servo_table_is_read_off_the_link_words():
     row = servo_row(axis([[10, MOVE], [10, 2000], [20, STATUS], [20, 0]],
-                         [[12, MOVE], [22, 3]]))
+                         [[12, MOVE], [22, 3]], sent={"1": 2000, "4": 0}))
     assert row["target"] == 2000
     assert row["executing"] is True and row["moving"] is True
     assert row["counter"] == 1999 and row["dac"] == 2049
@@ -26,8 +26,17 @@ def test_the_servo_table_is_read_off_the_link_words():
 
 
 def test_a_negative_target_and_no_status_yet():
-    row = servo_row(axis([[10, MOVE], [10, 0o177776]], []))
+    row = servo_row(axis([[10, MOVE], [10, 0o177776]], [], sent={"1": 0o177776}))
     assert row["target"] == -2 and row["executing"] is None
+
+
+def test_the_target_stays_while_move_complete_polls_the_status():
+    """Move.Complete?'s polls push the move out of the last eight words; the
+    coordinator's "sent" keeps its value, and the table its target."""
+    polls = [[20 + i, w] for i in range(4) for w in (STATUS, 2)]
+    row = servo_row(axis(polls, [[21 + i, 2] for i in range(4)], sent={"1": 2000, "2": 300, "4": 2}))
+    assert row["target"] == 2000 and row["max_vel"] == 300
+    assert row["executing"] is False and row["moving"] is True
 
 
 def test_the_view_names_each_machine_its_state_and_console_tail():
