@@ -4,8 +4,11 @@ every name imported from a harness module exists there. Read from the source wit
 ast (imports inside functions included), nothing imported."""
 import ast
 import functools
+import gc
 import re
 from pathlib import Path
+
+import pytest
 
 HARNESS = Path(__file__).resolve().parents[2] / "harness"
 
@@ -26,8 +29,20 @@ def modules():
 
 @functools.lru_cache(maxsize=None)
 def parsed(path):
-    """The file's ast: each file is read and parsed once, whichever checks walk it."""
-    return ast.parse(path.read_text(), str(path))
+    """The file's ast: each file is read and parsed once, whichever checks walk it.
+    The trees kept are frozen out of the cyclic collector's way (they hold no cycles,
+    and its full collections would walk them all again and again) until the module's
+    tests are done (forget_the_trees)."""
+    tree = ast.parse(path.read_text(), str(path))
+    gc.freeze()
+    return tree
+
+
+@pytest.fixture(scope="module", autouse=True)
+def forget_the_trees():
+    yield
+    parsed.cache_clear()
+    gc.unfreeze()
 
 
 def imported(path, known):
