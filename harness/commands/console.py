@@ -5,7 +5,7 @@ from pathlib import Path
 
 from harness.blocks.disk import DiskError, check_image, check_not_held
 from harness.commands.argtypes import positive
-from harness.machine.console_session import BUSY_WAIT, HINT, RACK_HINT, session
+from harness.machine.console_session import BUSY_WAIT, HINT, IDLE_SPEED_MAX, RACK_HINT, session
 from harness.machine.build import (PDP11, PDP11_TIMED, PRISTINE_DISK as PRISTINE,
                                     WORKING_DISK as WORK_DISK)
 
@@ -21,7 +21,10 @@ DESCRIPTION = f"""\
 Boot the FORTH on the robot's PDP-11/23 and join your terminal to its console,
 ready for `1000 LOAD`. The machine runs at the 11/23's pace (SET CLK
 REALTIME) unless --fast: then at full speed while the FORTH works, and at the
-11/23's pace while it waits for a key (SET CPU IDLE), which costs the host little.
+11/23's pace while it waits for a key (SET CPU IDLE), which costs the host little;
+--idle-speed N makes those waits pass N times faster: a key is read at the next
+clock tick, and a line's characters come as on a 9600-baud line (about 1 ms of
+waiting each at the 11/23's pace).
 
 {HINT}
 
@@ -41,6 +44,11 @@ def configure(parser):
                         "(default: local/robot.dsk)")
     parser.add_argument("--fast", action="store_true",
                         help="full speed instead of the 11/23's real-time pace")
+    parser.add_argument("--idle-speed", type=idle_speed, default=1, metavar="N",
+                        help="with --fast: the FORTH's waits for keys (at the prompt, and "
+                        "between a line's characters) pass at N times the 11/23's pace "
+                        f"(SET CLK IDLESPEED, 1-{IDLE_SPEED_MAX}; default 1): a simulated "
+                        "second of waiting takes 1/N wall seconds")
     parser.add_argument("--trace", metavar="FILE", help="record the plant trace (CSV)")
     parser.add_argument("--read-only", action="store_true",
                         help="attach the disk read-only (beside a simulator writing it)")
@@ -52,6 +60,15 @@ def configure(parser):
     parser.add_argument("--busy-wait", type=positive, default=BUSY_WAIT,
                         help=argparse.SUPPRESS)
     parser.set_defaults(run=run)
+
+
+def idle_speed(text):
+    """--idle-speed's value: SET CLK IDLESPEED's range (pdp11-devices/bus/kw11l.c)."""
+    value = int(text) if text.isdigit() else 0
+    if not 1 <= value <= IDLE_SPEED_MAX:
+        raise argparse.ArgumentTypeError(f"{text!r}: expected a whole number from 1 to "
+                                         f"{IDLE_SPEED_MAX}")
+    return value
 
 
 def working_disk(requested, read_only=False):
@@ -81,6 +98,9 @@ def _check(disk, read_only):
 
 
 def run(args):
+    if args.idle_speed != 1 and not args.fast:
+        raise ConsoleError("--idle-speed paces the waits of --fast (without it every "
+                           "instruction runs at the 11/23's pace): give --fast too")
     disk = working_disk(args.disk, args.read_only)
     args.simulator = args.simulator or str(PDP11_TIMED if args.timed else PDP11)
     if not Path(args.simulator).is_file():
@@ -88,4 +108,5 @@ def run(args):
     if args.trace and not Path(args.trace).resolve().parent.is_dir():
         raise ConsoleError(f"{args.trace}: its directory does not exist")
     return session(args.simulator, disk, trace=args.trace, fast=args.fast, timed=args.timed,
-                   busy_wait=args.busy_wait, read_only=args.read_only)
+                   busy_wait=args.busy_wait, read_only=args.read_only,
+                   idle_speed=args.idle_speed)

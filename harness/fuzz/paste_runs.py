@@ -17,6 +17,7 @@ import pexpect
 from harness.fuzz.paste_text import check_line, definitions, expected
 from harness.lab.launch import LabProcess
 from harness.lab.page_client import Page
+from harness.machine import pty_child
 from harness.machine.build import ROOT, fresh_disk
 
 
@@ -24,22 +25,24 @@ class PasteFailed(AssertionError):
     pass
 
 
-def console(disk, fast, timeout=30):
-    """`python -m harness console` on `disk`, booted to its prompt."""
+def console(disk, fast, timeout=30, idle_speed=1):
+    """`python -m harness console` on `disk`, booted to its prompt; fast: --fast, its
+    waits at `idle_speed` times the 11/23's pace."""
     child = pexpect.spawn(sys.executable, ["-m", "harness", "console", "--disk", str(disk)]
-                          + (["--fast"] if fast else []), cwd=str(ROOT), timeout=timeout,
-                          encoding="latin-1", dimensions=(24, 200))
-    child.delaybeforesend = None
+                          + (["--fast", "--idle-speed", str(idle_speed)] if fast else []),
+                          cwd=str(ROOT), timeout=timeout, encoding="latin-1",
+                          dimensions=(24, 200))
+    child.delaybeforesend = child.delayafterread = None
     child.expect(r"blocks 0-\d+\.\r\n ok\r\n")
     return child
 
 
-def console_paste(chars, fast, tmp):
+def console_paste(chars, fast, tmp, idle_speed=1):
     """Paste `chars` characters of definitions into the console in one write;
     (wall seconds until the check line answered, definitions)."""
     disk = fresh_disk(tmp, f"paste-{chars}.dsk")
     text, n = definitions(chars)
-    child = console(disk, fast)
+    child = console(disk, fast, idle_speed=idle_speed)
     log = []
     child.logfile_read = type("Log", (), {"write": lambda self, s: log.append(s),
                                           "flush": lambda self: None})()
@@ -49,6 +52,7 @@ def console_paste(chars, fast, tmp):
     seconds = time.monotonic() - start
     child.send("BYE\r")
     child.expect(pexpect.EOF, timeout=60)
+    pty_child.close(child)
     screen = "".join(log)
     if found != 0 or "Error" in screen or "lost" in screen:
         raise PasteFailed(f"{chars} characters into the console ({'fast' if fast else 'real'})"

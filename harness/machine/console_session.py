@@ -19,6 +19,7 @@ import signal
 import sys
 import tempfile
 import termios
+import time
 import tty
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -32,7 +33,7 @@ from harness.machine.build import KERNEL, PRISTINE_DISK
 from harness.machine.console_halt import HaltWatcher
 from harness.machine.console_watch import Leave, LineWatcher
 from harness.machine.kernel_layout import KernelMapError, read_kernel_map
-from harness.machine.key_feed import KeyFeed, shown
+from harness.machine.key_feed import CONT_WAIT_S, KeyFeed, shown
 
 # the 11/23's pace (CLK RATE, 300K instructions/s) from the first instruction; SIMH's
 # SET THROTTLE cannot pace the kernel's WAIT (pdp11-devices/bus/kw11l.c)
@@ -40,6 +41,8 @@ REALTIME = "set clk realtime"
 # --fast: full speed while the FORTH works; while KEY WAITs the KW11-L sleeps the
 # host at the 11/23's pace (pdp11-devices/bus/kw11l.c), so an idle prompt costs little
 IDLE = "set cpu idle"
+# ... or at IDLESPEED times that pace (--idle-speed): SET CLK IDLESPEED's range
+IDLE_SPEED_MAX = 1000
 # The amplifier rack starts switched off, as the lab's operator left it: the axes
 # stand still (z's brake on) however long the blocks take to load or the user
 # waits; it is switched on once Set.Up.Robot's servo holds them (README).
@@ -58,12 +61,14 @@ SIMH_ERROR = re.compile(r"(Unit not attached|Non-existent[^\r\n]*|[A-Z][^\r\n]*e
 
 
 def boot_script(disk, trace=None, fast=False, kernel=KERNEL, timed=False, read_only=False,
-                setup=""):
-    """The console's machine: paced (or idling) as asked, the rack off, a trace;
-    timed: each instruction takes its KDF11-A time (SET CLK TIMED); `setup`: more
-    SIMH lines (the five machines' lock-step: harness/controllers/launcher.py)."""
+                setup="", idle_speed=1):
+    """The console's machine: paced (or idling, its waits at `idle_speed` times the
+    11/23's pace) as asked, the rack off, a trace; timed: each instruction takes its
+    KDF11-A time (SET CLK TIMED); `setup`: more SIMH lines (the five machines'
+    lock-step: harness/controllers/launcher.py)."""
     trace_line = f"attach plant {Path(trace).resolve()}\n" if trace else ""
-    return simh.boot_script(disk, kernel, setup=f"{IDLE if fast else REALTIME}\n"
+    pace = f"{IDLE}\nset clk idlespeed={idle_speed}" if fast else REALTIME
+    return simh.boot_script(disk, kernel, setup=f"{pace}\n"
                             + ("set clk timed\n" if timed else "")
                             + f"{RACK_OFF}\n{RACK_HINT_ON}\n{trace_line}" + setup,
                             read_only=read_only)
@@ -99,10 +104,15 @@ def quiet_stdout():
 
 def probe_prompt(child, tries=40):
     """After CONT: SIMH discards what was typed before the machine runs
-    (TCSAFLUSH), so type an empty line until the FORTH answers it.
+    (TCSAFLUSH), so wait for that (the pty leaves sim>'s line editing; a pty that
+    never edits lines, such as the console's own, has nothing to wait for) and type
+    an empty line until the FORTH answers it.
     0 answered, 2 no answer, 3 the simulator exited. (A late answer to an
     earlier empty line may come after this returns: _flush allows for it.)"""
     ok = " ok\r\n" if child.encoding else b" ok\r\n"   # str or bytes, as the child reads
+    deadline = time.monotonic() + CONT_WAIT_S
+    while pty_child.line_editing(child.child_fd) and time.monotonic() < deadline:
+        time.sleep(0.001)                          # no event says so: a short poll
     for _ in range(tries):
         child.send("\r")
         i = child.expect([ok, pexpect.TIMEOUT, pexpect.EOF], timeout=0.25)
@@ -288,6 +298,7 @@ def _converse(child, feed, watcher, halts, log=None):
                 except OSError:
                     data = b""
                 if not data:
+                    child.flag_eof = True            # as pexpect notes its own reads' end
                     return
                 feed.output(data)
                 data = shown(halts.feed(watcher.output(data)))
@@ -317,9 +328,10 @@ def missing_blocks_note(disk, pristine=PRISTINE_DISK):
     """One line when `disk` lacks blocks the pristine image has (a working disk made
     by an older version: make never overwrites it), else None."""
     try:
-        missing = blocks_missing(read_image(disk), read_image(pristine))
+        work, shipped = read_image(disk), read_image(pristine)
     except DiskError:
         return None                          # the boot itself says what is wrong
+    missing = [] if work == shipped else blocks_missing(work, shipped)   # a copy lacks none
     if not missing:
         return None
     return (f"{disk} lacks blocks {block_ranges(missing)}, which this version ships (they "
@@ -328,16 +340,20 @@ def missing_blocks_note(disk, pristine=PRISTINE_DISK):
 
 
 def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BUSY_WAIT,
-            timed=False, read_only=False, setup="", rack_hint=True, log=None):
+            timed=False, read_only=False, setup="", rack_hint=True, log=None, idle_speed=1):
     """Run the console until the user leaves; the exit status (0: all written).
     `setup`: more SIMH lines for the boot script (boot_script); `rack_hint`: say that
     the rack starts off (not where another plant drives the axes); `log`: a file that
-    gets a copy of what the terminal shows (the five machines' page reads it)."""
+    gets a copy of what the terminal shows (the five machines' page reads it);
+    `idle_speed`: with `fast`, the pace of the FORTH's waits (boot_script)."""
     with tempfile.TemporaryDirectory(prefix="console-") as tmp:
         ini = Path(tmp) / "console.ini"
-        ini.write_text(boot_script(disk, trace, fast, kernel, timed, read_only, setup))
-        pace = "full speed" if fast else ("real-time pace (KDF11-A instruction times)" if timed
-                                          else "real-time pace (300K instructions/s)")
+        ini.write_text(boot_script(disk, trace, fast, kernel, timed, read_only, setup,
+                                   idle_speed))
+        waits = "" if idle_speed == 1 else f", its waits at {idle_speed} times the 11/23's pace"
+        pace = f"full speed{waits}" if fast else (
+            "real-time pace (KDF11-A instruction times)" if timed
+            else "real-time pace (300K instructions/s)")
         mode = " (read-only: FLUSH will fail)" if read_only else ""
         print(f"[console] booting the FORTH on the PDP-11/23, {pace}, disk {disk}{mode}")
         print(f"[console] {HINT}")

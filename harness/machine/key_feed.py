@@ -17,9 +17,12 @@ output (else the simulator would stop on a full pty and never drain its input).
 and has the terminal side put ^C into the DL11 at once (SIGUSR1): the FORTH then
 drops its ring and says how much. ^E: what the pty still holds is taken back
 (read out of it) into the queue first (SIMH flushes the pty when it stops), then
-^E goes in; the queue waits while SIMH's sim> is up and goes on after CONT. Keys
-typed at sim> go straight in. The simulator is stopped (SIGSTOP) for the instant the
-pty is emptied, so no character is read meanwhile.
+^E goes in; the queue waits while SIMH's sim> is up and goes on after CONT, once
+SIMH has taken the machine back (it empties the pty then: the pty's mode changes from
+sim>'s line editing to the machine's raw keys). Keys typed at sim> go straight in, a
+line at a time: what follows a CONT waits for the machine in the queue.
+The simulator is stopped (SIGSTOP) for the instant the pty is emptied, so no
+character is read meanwhile.
 
 The watcher (harness/machine/console_watch.py) sees each byte when it is
 written, so a way out inside a paste (BYE, ^D) counts where it stands.
@@ -33,9 +36,14 @@ import termios
 import time
 
 from harness.machine.console_watch import Leave
+from harness.machine.pty_child import line_editing
 
 WINDOW = 256                 # characters the pty may hold: taken back at ^E, dropped at ^C
-RESUME_AFTER_CONT_S = 0.3    # SIMH flushes the pty as the machine starts again (CONT)
+# After CONT the queue waits until SIMH has put the pty out of sim>'s line editing (it
+# flushes the pty as it does: TCSAFLUSH, sim_console.c), at most CONT_WAIT_S; where
+# sim>'s mode could not be seen, RESUME_AFTER_CONT_S.
+CONT_WAIT_S = 2.0
+RESUME_AFTER_CONT_S = 0.3
 STOP_KEY_WAIT_S = 2.0        # at most this long waiting for sim> after ^E
 CTRL_C, CTRL_E, CTRL_U = 3, 5, 21
 
@@ -79,6 +87,7 @@ class KeyFeed:
         self.queue = bytearray()
         self.stopping = None          # monotonic deadline while ^E waits for sim>
         self.was_simh = False
+        self.simh_edits = False       # sim> was seen reading the pty a line at a time
         self.resume_at = 0.0
         self.abandoned = 0            # characters after a way out, never typed
         self.booted = False           # SIMH empties the pty as it starts the machine (GO):
@@ -127,6 +136,10 @@ class KeyFeed:
             os.close(fd)
         return bytes(taken)
 
+    def _at_simh(self):
+        self.stopping, self.was_simh = None, True
+        self.simh_edits = line_editing(self.fd) is True
+
     def waiting(self):
         return len(self.queue) + self.in_pty()
 
@@ -156,12 +169,13 @@ class KeyFeed:
         return notes
 
     def _put(self, data, watcher):
-        if not data:
-            return
-        if watcher.at_simh:
-            self._write(data, watcher)           # to SIMH's prompt; a paste waits for CONT
-        else:
-            self.queue += data
+        while data and watcher.at_simh:          # to SIMH's prompt, a line at a time ...
+            self._at_simh()
+            ends = [i for i in (data.find(b"\r"), data.find(b"\n")) if i >= 0]
+            line = data[:min(ends) + 1] if ends else data
+            self._write(line, watcher)
+            data = data[len(line):]
+        self.queue += data                       # ... what follows a CONT waits for the machine
 
     def interrupt(self):
         """^C: drop what waits here and in the pty; ^C into the DL11 at once."""
@@ -202,15 +216,20 @@ class KeyFeed:
             return True
         now = time.monotonic()
         if watcher.at_simh:
-            self.stopping, self.was_simh = None, True
+            self._at_simh()
             return True
         if self.was_simh:                       # CONT: SIMH flushes the pty as it runs
-            self.was_simh, self.resume_at = False, now + RESUME_AFTER_CONT_S
+            self.was_simh = False
+            self.resume_at = now + (CONT_WAIT_S if self.simh_edits else RESUME_AFTER_CONT_S)
         if self.stopping is not None:
             if now < self.stopping:
                 return True
             self.stopping = None
-        return now < self.resume_at
+        if now < self.resume_at:
+            if not self.simh_edits or line_editing(self.fd):
+                return True
+            self.resume_at = 0.0                # the machine runs: the pty is its own
+        return False
 
     def pump(self, watcher):
         """Write what the window allows; the number of bytes written. A way out

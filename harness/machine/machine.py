@@ -74,6 +74,8 @@ class Machine:
                                    encoding="latin-1", timeout=timeout,
                                    dimensions=(24, 200))
         self.child.delaybeforesend = None  # pexpect would wait 50 ms per send
+        self.child.delayafterread = None   # ... and 0.1 ms after each read: half a line's
+                                           # wall time where a test types a thousand
         self.at_sim_prompt = False
         try:
             self.banner = self._expect_ok_or_halt("boot")

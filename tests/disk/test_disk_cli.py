@@ -25,15 +25,30 @@ def failed(result, *words):
     return True
 
 
-@pytest.fixture
-def src(tmp_path):
-    d = tmp_path / "src"
+def block_dir(directory):
+    d = directory / "src"
     d.mkdir()
     (d / "0007.txt").write_text("( seven )\n7 .\n")
     (d / "1000.txt").write_text("( one thousand )\n" + "x" * 64 + "\n")
     (d / "10239.txt").write_text("( the last block )\n")
     (d / "README.md").write_text("not a block\n")
     return d
+
+
+@pytest.fixture
+def src(tmp_path):
+    return block_dir(tmp_path)
+
+
+@pytest.fixture(scope="module")
+def packed(tmp_path_factory):
+    """block_dir() packed once by `disk pack`, for the tests that only read the
+    image (read-only, so none can change it for the next)."""
+    directory = tmp_path_factory.mktemp("packed")
+    image = directory / "robot.dsk"
+    assert harness("disk", "pack", block_dir(directory), image).returncode == 0
+    image.chmod(0o444)
+    return image
 
 
 def test_pack_places_block_n_at_byte_1024n_and_blanks_the_rest(src, tmp_path):
@@ -51,9 +66,8 @@ def test_pack_places_block_n_at_byte_1024n_and_blanks_the_rest(src, tmp_path):
                for n in range(10240) if n not in used)
 
 
-def test_export_writes_the_non_blank_blocks_in_canonical_form(src, tmp_path):
-    image, out = tmp_path / "robot.dsk", tmp_path / "out"
-    harness("disk", "pack", src, image)
+def test_export_writes_the_non_blank_blocks_in_canonical_form(packed, tmp_path):
+    image, out = packed, tmp_path / "out"
     result = harness("disk", "export", image, out)
     assert result.returncode == 0, result.stderr
     assert sorted(p.name for p in out.iterdir()) == ["0007.txt", "1000.txt", "10239.txt"]
@@ -64,9 +78,8 @@ def test_export_writes_the_non_blank_blocks_in_canonical_form(src, tmp_path):
     assert again.read_bytes() == image.read_bytes()
 
 
-def test_export_range_and_blank_blocks(src, tmp_path):
-    image, out = tmp_path / "robot.dsk", tmp_path / "out"
-    harness("disk", "pack", src, image)
+def test_export_range_and_blank_blocks(packed, tmp_path):
+    image, out = packed, tmp_path / "out"
     result = harness("disk", "export", image, out, "--from", 999, "--to", 1001)
     assert [p.name for p in out.iterdir()] == ["1000.txt"]
     assert "blank, not exported: 999, 1001" in result.stdout
@@ -74,9 +87,8 @@ def test_export_range_and_blank_blocks(src, tmp_path):
     assert (out / "0999.txt").read_text() == "\n" * 16
 
 
-def test_export_never_overwrites_a_different_file_and_writes_nothing(src, tmp_path):
-    image = tmp_path / "robot.dsk"
-    harness("disk", "pack", src, image)
+def test_export_never_overwrites_a_different_file_and_writes_nothing(packed, src):
+    image = packed
     (src / "1000.txt").write_text("( edited by hand )\n")
     (src / "0007.txt").unlink()
     result = harness("disk", "export", image, src)
@@ -88,9 +100,8 @@ def test_export_never_overwrites_a_different_file_and_writes_nothing(src, tmp_pa
     assert (src / "0007.txt").exists()
 
 
-def test_export_over_an_identical_file_leaves_it_alone(src, tmp_path):
-    image = tmp_path / "robot.dsk"
-    harness("disk", "pack", src, image)
+def test_export_over_an_identical_file_leaves_it_alone(packed, src):
+    image = packed
     result = harness("disk", "export", image, src, "--from", 7, "--to", 7)
     assert result.returncode == 0 and "unchanged" in result.stdout
     assert (src / "0007.txt").read_text() == "( seven )\n7 .\n"
@@ -141,9 +152,8 @@ def test_export_of_an_image_of_the_wrong_size(tmp_path):
     (("--from", -1), ["first block -1 is outside"]),
     (("--from", 20, "--to", 10), ["empty range"]),
 ])
-def test_export_of_a_block_out_of_range(src, tmp_path, args, words):
-    image = tmp_path / "robot.dsk"
-    harness("disk", "pack", src, image)
+def test_export_of_a_block_out_of_range(packed, tmp_path, args, words):
+    image = packed
     assert failed(harness("disk", "export", image, tmp_path / "o", *args), *words)
     assert not (tmp_path / "o").exists()
 
@@ -182,12 +192,11 @@ def test_written_files_get_ordinary_permissions(src, tmp_path):
     assert image.stat().st_mode & 0o777 == 0o666 & ~mask
 
 
-def test_add_new_fills_only_blank_blocks_and_is_refused_while_held(src, tmp_path):
+def test_add_new_fills_only_blank_blocks_and_is_refused_while_held(packed, src, tmp_path):
     """A working disk made by an older version gets the blocks a newer one ships
     (blank there, written on the pristine image); a block the user wrote stays his."""
     import fcntl
-    pristine, work = tmp_path / "pristine.dsk", tmp_path / "work.dsk"
-    assert harness("disk", "pack", src, pristine).returncode == 0
+    pristine, work = packed, tmp_path / "work.dsk"
     (src / "1000.txt").write_text("( my own block 1000 )\n")
     (src / "0007.txt").unlink()                         # the old version lacked block 7
     assert harness("disk", "pack", src, work).returncode == 0
@@ -206,10 +215,9 @@ def test_add_new_fills_only_blank_blocks_and_is_refused_while_held(src, tmp_path
     assert again.returncode == 0 and "nothing to add" in again.stdout
 
 
-def test_the_console_names_blocks_the_working_disk_lacks(src, tmp_path):
+def test_the_console_names_blocks_the_working_disk_lacks(packed, src, tmp_path):
     from harness.machine.console_session import missing_blocks_note
-    pristine, work = tmp_path / "pristine.dsk", tmp_path / "work.dsk"
-    assert harness("disk", "pack", src, pristine).returncode == 0
+    pristine, work = packed, tmp_path / "work.dsk"
     assert missing_blocks_note(pristine, pristine) is None
     (src / "0007.txt").unlink()
     (src / "10239.txt").unlink()

@@ -44,7 +44,7 @@ def test_each_cycle_writes_new_contents():
 
 @needs_build
 def test_a_failed_fsync_is_a_write_error_not_ok(tmp_path, monkeypatch):
-    monkeypatch.setenv("LD_PRELOAD", str(failing_fsync_library(tmp_path)))
+    monkeypatch.setenv("LD_PRELOAD", str(failing_fsync_library()))
     image = fresh_disk(tmp_path, "eio.dsk")
     with Machine(disk=image) as m:
         with pytest.raises(ForthError) as err:

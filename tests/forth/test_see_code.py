@@ -6,13 +6,11 @@ word of the kernel, the 1983 servo's Interrupt.Servo (block 1008) and a table of
 instructions neither uses (MUL, SOB, EMT, the condition codes ...)."""
 import re
 import tempfile
-import termios
-import time
 
-import pexpect
 import pytest
 
 from harness.machine.build import fresh_disk
+from harness.machine.console_session import probe_prompt
 from harness.machine.machine import SIM_PROMPT, Machine
 
 LINE = re.compile(r"^([0-7]+): (.*?)((?: \\ \S+)*)\s*$")   # text, then \ NAME notes
@@ -57,22 +55,9 @@ def simh_disassembly(m, spans):
         m.child.expect(SIM_PROMPT)
         found.update((int(a, 8), t) for a, t in SIMH_LINE.findall(m.child.before))
     m.child.sendline("cont")
-    for _ in range(50):                  # SIMH drops what is typed as it resumes
-        running(m.child)
-        m.child.send("\r")
-        if m.child.expect([r" ok\r\n", pexpect.TIMEOUT], timeout=0.2) == 0:
-            break
+    assert probe_prompt(m.child) == 0    # SIMH drops what is typed as it resumes
     m.send(".( sync)")
     return found
-
-
-def running(child, timeout=10):
-    """Once SIMH runs the machine again after CONT: it has left the canonical
-    mode of its sim> (its run mode's tcsetattr, TCSAFLUSH, discards what was typed
-    before). Polled: the terminal's mode sends no event."""
-    deadline = time.monotonic() + timeout
-    while termios.tcgetattr(child.child_fd)[3] & termios.ICANON and time.monotonic() < deadline:
-        time.sleep(0.001)
 
 
 @pytest.fixture(scope="module")

@@ -2,14 +2,14 @@
 back, and every way out (BYE, ^D, ^C and QUIT at sim>) leaves an UPDATEd block on
 the disk, or says plainly which blocks were not written."""
 import os
-import sys
 
-import pexpect
 import pytest
 
+from harness.cli import main
 from harness.machine.console_session import probe_prompt
 from harness.machine.build import fresh_disk
-from tests.run.common import ROOT, failing_fsync_library, needs_build, outlived
+from tests.run.common import (IDLE_SPEED, ended, failing_fsync_library, harness_console,
+                              needs_build, outlived)
 
 pytestmark = needs_build
 
@@ -21,20 +21,18 @@ FLUSHED = r"FLUSH answered ok: every UPDATEd block is written to .*\r+\n" \
           r"\[console\] Disk .* detached\.\r+\n\[console\] Bye\."
 
 
-def console(disk, *extra, env=None):
-    child = pexpect.spawn(sys.executable, ["-m", "harness", "console", "--fast",
-                                           "--disk", str(disk), *extra],
-                          cwd=str(ROOT), timeout=30, encoding="latin-1", env=env)
-    child.delaybeforesend = None
+def console(disk, *extra, env=None, idle_speed=IDLE_SPEED):
+    child = harness_console("--fast", *idle_speed, "--disk", disk, *extra,
+                            encoding="latin-1", env=env)
     child.expect("Console: leave with BYE")
     child.expect(r"blocks 0-\d+\.\r\n ok\r\n")
     return child
 
 
-def fresh_console(tmp_path, *extra, env=None):
+def fresh_console(tmp_path, *extra, env=None, idle_speed=IDLE_SPEED):
     """The console on a fresh copy of the pristine disk: the child and the disk."""
     disk = fresh_disk(tmp_path, "work.dsk")
-    return console(disk, *extra, env=env), disk
+    return console(disk, *extra, env=env, idle_speed=idle_speed), disk
 
 
 def write_block_word(child, text):
@@ -49,9 +47,7 @@ def block_text(disk, n):
 def expect_left_safely(child, disk, text):
     """The console reported every block written, exited 0, and the block holds text."""
     child.expect(FLUSHED)
-    child.expect(pexpect.EOF)
-    child.close()
-    assert child.exitstatus == 0
+    assert ended(child) == 0
     assert block_text(disk, BLOCK).startswith(text)
 
 
@@ -63,6 +59,9 @@ def test_console_command_simh_prompt_and_bye_flushes(tmp_path):
     child.expect("sim> ")
     child.send("show plant\r")
     child.expect(r"PLANT, seed=\d+.*\r\n  X ")
+    child.expect("sim> ")
+    child.send("show clk idlespeed\r")                    # --idle-speed 100
+    child.expect(r"idlespeed=100\r\n")
     child.expect("sim> ")
     child.send("cont\r")
     assert probe_prompt(child) == 0
@@ -76,17 +75,31 @@ def test_console_command_simh_prompt_and_bye_flushes(tmp_path):
 
 
 def test_console_timed_runs_on_the_kdf11s_times(tmp_path):
-    child, disk = fresh_console(tmp_path, "--timed", "--fast")
+    """... and --fast without --idle-speed waits at the 11/23's own pace."""
+    child, disk = fresh_console(tmp_path, "--timed", idle_speed=())
     child.send("\x05")                                   # ^E: SIMH's prompt
     child.expect("sim> ")
     child.send("show clk rate\r")
     child.expect(r"rate=13333333 units \(timed")
     child.expect("sim> ")
+    child.send("show clk idlespeed\r")
+    child.expect(r"idlespeed=1\r\n")
+    child.expect("sim> ")
     child.send("cont\r")
     assert probe_prompt(child) == 0
     child.send("BYE\r")
     child.expect(FLUSHED)
-    child.expect(pexpect.EOF)
+    assert ended(child) == 0
+
+
+def test_idle_speed_is_a_whole_number_for_fast(capsys):
+    for bad in ("0", "1001", "2.5", "x"):
+        with pytest.raises(SystemExit) as usage:
+            main(["console", "--fast", "--idle-speed", bad])
+        assert usage.value.code == 2
+        assert f"{bad!r}: expected a whole number from 1 to 1000" in capsys.readouterr().err
+    assert main(["console", "--idle-speed", "10"]) == 1             # without --fast
+    assert "--idle-speed paces the waits of --fast" in capsys.readouterr().err
 
 
 def test_ctrl_d_at_the_simh_prompt_flushes_first(tmp_path):
@@ -120,9 +133,7 @@ def test_every_simh_way_out_writes_the_updated_block_first(tmp_path, way):
                  r"to [^\r\n]* first")
     child.expect_exact("[console] The simulator was left at sim> (QUIT, EXIT or BYE): it "
                        "FLUSHed")
-    child.expect(pexpect.EOF)
-    child.close()
-    assert child.exitstatus == 0
+    assert ended(child) == 0
     assert block_text(disk, BLOCK) == b"Z" * 64
 
 
@@ -147,11 +158,11 @@ def test_ctrl_c_is_the_forths_until_sim_where_it_leaves_after_flush(tmp_path):
 
 
 def test_bye_while_a_word_runs_stops_it_with_ctrl_c_and_flushes(tmp_path):
-    child, disk = fresh_console(tmp_path, "--busy-wait", "0.5")
+    child, disk = fresh_console(tmp_path, "--busy-wait", "0.2")
     child.send(f': W S" written while busy" {BLOCK} BLOCK SWAP CMOVE UPDATE ; '
                ": SPIN BEGIN AGAIN ; W SPIN\r")
     child.send("BYE\r")
-    child.expect_exact("The FORTH was busy for 0.5 s: ^C stopped the running word so "
+    child.expect_exact("The FORTH was busy for 0.2 s: ^C stopped the running word so "
                        "that FLUSH could run.")
     expect_left_safely(child, disk, b"written while busy")
 
@@ -181,7 +192,7 @@ def test_a_terminal_that_closes_leaves_like_bye(tmp_path):
 
 def test_a_flush_that_fails_names_the_blocks_not_written(tmp_path):
     """An fsync that fails (LD_PRELOAD) makes the write a drive error (rl_durable.c)."""
-    lib = failing_fsync_library(tmp_path)
+    lib = failing_fsync_library()
     child, disk = fresh_console(tmp_path, env={**os.environ, "LD_PRELOAD": str(lib)})
     write_block_word(child, "never written")
     child.send("BYE\r")
@@ -189,19 +200,13 @@ def test_a_flush_that_fails_names_the_blocks_not_written(tmp_path):
     child.expect_exact(f"[console] NOT SAVED: block(s) {BLOCK}: UPDATEd, and FLUSH did not "
                        "complete their write; the changes may be lost.")
     child.expect(r"Disk .* detached\.\r+\n\[console\] Bye\.")
-    child.expect(pexpect.EOF)
-    child.close()
-    assert child.exitstatus == 1
+    assert ended(child) == 1
 
 
 def test_missing_disk_is_a_clear_error(tmp_path):
-    child = pexpect.spawn(sys.executable, ["-m", "harness", "console", "--disk",
-                                           str(tmp_path / "none.dsk")],
-                          cwd=str(ROOT), timeout=30, encoding="latin-1")
-    child.expect(pexpect.EOF)
-    child.close()
+    child = harness_console("--disk", tmp_path / "none.dsk", encoding="latin-1")
+    assert ended(child) == 1
     assert "none.dsk: no such disk image" in child.before
-    assert child.exitstatus == 1
 
 
 def simh_command(child, command):
@@ -217,7 +222,12 @@ def simh_command(child, command):
 
 
 def test_readme_first_session_with_the_rack_switched_on_by_hand(tmp_path):
-    child, disk = fresh_console(tmp_path)
+    # waits at the 11/23's own pace, as the README's session has them: a typed line
+    # reaches the FORTH whole (1 ms a character), so the move starts at the tick phase
+    # it always has. At 100 a line now and then came in two parts, which shifts it, and
+    # at some phases the printed servo's Move.Complete? waits for ever (docs/servo.md):
+    # once in 250 runs on the loaded host; 3 of 30 moves typed in two parts on purpose.
+    child, disk = fresh_console(tmp_path, idle_speed=())
     assert "power=off" in simh_command(child, "show plant")      # the console's boot
     for line in ("1000 LOAD", "Set.Up.Robot"):
         child.send(line + "\r")
@@ -231,7 +241,7 @@ def test_readme_first_session_with_the_rack_switched_on_by_hand(tmp_path):
     child.send("1020 LOAD\r")                                  # the demonstration block
     child.expect(r"1020 LOAD x y z t counters: .*\r\n(.*\r\n){3} ok\r\n", timeout=60)
     child.send("BYE\r")
-    child.expect(pexpect.EOF)
+    assert ended(child) == 0
 
 
 def test_a_simulator_that_dies_is_reported_with_what_it_cost(tmp_path):
@@ -243,9 +253,7 @@ def test_a_simulator_that_dies_is_reported_with_what_it_cost(tmp_path):
     child.send("! kill -KILL $PPID\r")
     child.expect_exact("[console] the simulator exited on its own: blocks UPDATEd since "
                        "the last FLUSH, if any, were not written to")
-    child.expect(pexpect.EOF)
-    child.close()
-    assert child.exitstatus == 1
+    assert ended(child) == 1
 
 
 def test_bye_after_the_disk_was_detached_says_so_and_names_the_lost_block(tmp_path):
@@ -257,9 +265,7 @@ def test_bye_after_the_disk_was_detached_says_so_and_names_the_lost_block(tmp_pa
     child.expect(r"FLUSH failed \(Error: block write error: FLUSH\)\.\r+\n")
     child.expect_exact(f"[console] NOT SAVED: block(s) {BLOCK}: UPDATEd")
     child.expect_exact("not detached: it was not attached (a DETACH at sim>")
-    child.expect(pexpect.EOF)
-    child.close()
-    assert child.exitstatus == 1
+    assert ended(child) == 1
 
 
 def test_the_bye_word_leaves_like_typed_bye(tmp_path):

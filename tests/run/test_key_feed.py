@@ -4,6 +4,7 @@ import os
 import signal
 import subprocess
 import sys
+import termios
 import time
 import tty
 
@@ -75,6 +76,22 @@ def test_ctrl_e_takes_the_pty_back_and_sends_only_itself(feed):
     assert bytes(feed.queue) == text                     # whole, in order, nothing doubled
     assert in_pty_soon(feed, 1)                          # only ^E is in the pty
     assert feed.pump(watcher) == 0                       # held until sim> comes and goes
+
+
+def test_keys_typed_after_cont_wait_until_simh_gives_the_machine_back(feed):
+    """SIMH empties the pty as CONT gives the FORTH its keys back: what is typed
+    behind CONT waits until the pty has left sim>'s line editing."""
+    watcher = LineWatcher()
+    feed.output(b" ok\r\n")
+    mode = termios.tcgetattr(feed.fd)
+    mode[3] |= termios.ICANON                            # sim> reads lines
+    termios.tcsetattr(feed.fd, termios.TCSANOW, mode)
+    watcher.output(b"sim> ")
+    feed.typed(b"cont\r1 .\r", watcher)
+    assert not watcher.at_simh and bytes(feed.queue) == b"1 .\r"
+    assert feed.pump(watcher) == 0                       # CONT not yet taken
+    tty.setraw(feed.fd)                                  # as SIMH runs the machine
+    assert feed.pump(watcher) == 4 and not feed.queue
 
 
 def test_a_way_out_in_a_paste_stops_it_there(feed):

@@ -2,21 +2,19 @@
 ATTACH takes an exclusive lock (pdp11-devices/simh/rl_one_writer.c), so a second
 simulator on the same image is refused naming the holder, through every entry
 point, or attaches it read-only when asked; the lock dies with its process."""
-import os
 import re
 import shutil
-import signal
 import subprocess
-import sys
 import time
 
-import pexpect
 import pytest
 
 from harness.cli import main
-from harness.machine import simh
+from harness.machine import pty_child, simh
+from harness.machine.machine import IDLE_PACE
 from harness.machine.scripted_machine import ScriptError, ScriptedMachine
-from tests.run.common import PRISTINE, ROOT, SIMULATOR, needs_build
+from tests.run.common import (IDLE_SPEED, PRISTINE, ROOT, SIMULATOR, ended, harness_console,
+                              needs_build, spawn)
 
 pytestmark = needs_build
 
@@ -24,22 +22,37 @@ BLOCK = 300
 
 
 def boot(disk, tmp_path, read_only=False, name="boot.ini"):
-    """build/pdp11 booting the FORTH on `disk`, at its prompt."""
+    """build/pdp11 booting the FORTH on `disk`, at its prompt (idling as the pty
+    Machine does, not racing a host core while it holds the disk)."""
     ini = tmp_path / name
-    ini.write_text(simh.boot_script(disk, read_only=read_only))
-    child = pexpect.spawn(str(SIMULATOR), [str(ini)], cwd=str(ROOT), timeout=30)
+    ini.write_text(simh.boot_script(disk, setup=IDLE_PACE, read_only=read_only))
+    child = spawn(SIMULATOR, ini)
     child.expect(rb"blocks 0-\d+\.\r\n ok\r\n")
     return child
 
 
-@pytest.fixture
-def held(tmp_path):
+def holding(directory):
     """A disk image a running simulator writes: (disk, that simulator)."""
-    disk = tmp_path / "robot.dsk"
+    disk = directory / "robot.dsk"
     shutil.copyfile(PRISTINE, disk)
-    first = boot(disk, tmp_path, name="first.ini")
+    return disk, boot(disk, directory, name="first.ini")
+
+
+@pytest.fixture(scope="module")
+def held(tmp_path_factory):
+    """holding(), one for the tests that only try the held disk (the lock is the
+    same whichever test came before)."""
+    disk, first = holding(tmp_path_factory.mktemp("held"))
     yield disk, first
-    first.close(force=True)
+    pty_child.kill(first)
+
+
+@pytest.fixture
+def held_alone(tmp_path):
+    """holding(), for a test that ends the holder."""
+    disk, first = holding(tmp_path)
+    yield disk, first
+    pty_child.kill(first)
 
 
 def holder_named(text, first):
@@ -68,6 +81,7 @@ def test_a_second_unit_of_the_same_simulator_is_refused_too(held):
     first.send(b"show rl1\r")
     first.expect(b"sim> ")
     assert b"not attached" in first.before
+    first.send(b"cont\r")                                 # holding on, as it was
 
 
 def test_read_only_beside_the_writer_reports_a_write_as_an_error(held, tmp_path):
@@ -86,24 +100,21 @@ def test_read_only_beside_the_writer_reports_a_write_as_an_error(held, tmp_path)
                   rb"leave without them\r\nsim> ")
     reader.send(b"quit -f\r")
     reader.expect(rb"QUIT -F: leaving without block\(s\) 300: UPDATEd, NOT SAVED")
-    reader.expect(pexpect.EOF)
-    reader.close()
-    assert reader.exitstatus == simh.LEFT_WITHOUT_BLOCKS
+    assert ended(reader) == simh.LEFT_WITHOUT_BLOCKS
     assert disk.read_bytes() == before
 
 
-def test_the_lock_dies_with_a_killed_simulator(held, tmp_path):
+def test_the_lock_dies_with_a_killed_simulator(held_alone, tmp_path):
     """kill -9 leaves no stale lock (flock ends with the process): the next
     simulator attaches; the holder file left behind is rewritten."""
-    disk, first = held
-    os.kill(first.pid, signal.SIGKILL)
-    first.wait()
+    disk, first = held_alone
+    pty_child.kill(first)                                   # SIGKILL
     second = boot(disk, tmp_path, name="second.ini")
     assert f"pid {second.pid} since" in (tmp_path / "robot.dsk.lock").read_text()
     second.send(b"\x05")
     second.expect(b"sim> ")
     second.send(b"quit\r")
-    second.expect(pexpect.EOF)
+    assert ended(second) == 0
     assert not (tmp_path / "robot.dsk.lock").exists()       # removed at DETACH
 
 
@@ -116,14 +127,11 @@ def test_the_console_says_it_in_one_line_and_exits_1(held, capsys):
 
 def test_the_console_read_only_boots_beside_the_writer(held):
     disk, _ = held
-    child = pexpect.spawn(sys.executable, ["-m", "harness", "console", "--fast", "--read-only",
-                                           "--disk", str(disk)], cwd=str(ROOT), timeout=30)
+    child = harness_console("--fast", *IDLE_SPEED, "--read-only", "--disk", disk)
     child.expect(rb"RL: unit is read only")
     child.expect(rb"blocks 0-\d+\.\r\n ok\r\n")
     child.send(b"BYE\r")
-    child.expect(pexpect.EOF)
-    child.close()
-    assert child.exitstatus == 0              # nothing UPDATEd: nothing lost
+    assert ended(child) == 0                  # nothing UPDATEd: nothing lost
 
 
 def test_the_lab_says_it_in_one_line_and_exits_1(held, capsys):
@@ -162,7 +170,7 @@ def test_the_bare_boot_script_paces_its_idle_prompt(tmp_path):
     ini = tmp_path / "robot.ini"
     ini.write_text((ROOT / "build" / "robot.ini").read_text()
                    .replace("local/robot.dsk", str(disk)))
-    child = pexpect.spawn(str(SIMULATOR), [str(ini)], cwd=str(ROOT), timeout=30)
+    child = spawn(SIMULATOR, ini)
     child.expect(rb" ok\r\n")
     start = time.monotonic()
     time.sleep(0.5)
@@ -173,8 +181,8 @@ def test_the_bare_boot_script_paces_its_idle_prompt(tmp_path):
     child.expect(rb"time=([\d.]+)s")
     simulated = float(child.match.group(1))
     child.send(b"quit\r")
-    child.expect(pexpect.EOF)
+    assert ended(child) == 0
     assert simulated < wall + 5, f"{simulated} simulated s in {wall:.1f} wall s"
-    reader = pexpect.spawn(str(SIMULATOR), [str(ini), "-r"], cwd=str(ROOT), timeout=30)
+    reader = spawn(SIMULATOR, ini, "-r")
     reader.expect(rb"RL: unit is read only")
-    reader.close(force=True)
+    pty_child.kill(reader)
