@@ -7,9 +7,14 @@ that wait on a simulator for seconds. Each run's wall seconds per module are kep
 in build/test-durations.json (written by the controller at the end of a run) and
 order the next run; a module not in it (a new one, or a fresh checkout) counts
 DEFAULT_TEST_S per test, as xdist's own order would. Only the order changes:
-every module still runs whole on one worker, its module fixtures once."""
+every module still runs whole on one worker, its module fixtures once.
+
+The modules of a SHARED_START group go to one worker together, one after the
+other: each worker that draws a figure pays matplotlib's import and its first
+figure (the fonts), about a second of CPU, and three workers would pay it three
+times."""
 import json
-from collections import defaultdict
+from collections import Counter, defaultdict
 
 from xdist.scheduler import LoadScopeScheduling
 
@@ -17,6 +22,10 @@ from harness.machine.build import BUILD
 
 DURATIONS = BUILD / "test-durations.json"
 DEFAULT_TEST_S = 0.1
+SHARED_START = {"matplotlib": ("tests/harness/test_cli_plot_timing.py",
+                               "tests/harness/test_path_plots.py",
+                               "tests/harness/test_plots.py")}
+GROUP_OF = {module: group for group, modules in SHARED_START.items() for module in modules}
 
 
 def module_of(nodeid):
@@ -33,12 +42,19 @@ def known_durations(path=DURATIONS):
         if isinstance(data, dict) else {}
 
 
+def scope_of(nodeid):
+    """The scope a test goes to a worker with: its module's group, else xdist's
+    (its module, or its class)."""
+    return GROUP_OF.get(module_of(nodeid), nodeid.rsplit("::", 1)[0])
+
+
 def longest_first(scopes, durations):
-    """The scopes (name -> its tests), longest expected first; ties keep xdist's order
-    (more tests first)."""
+    """The scopes (name -> its tests), longest expected first (the sum of their
+    modules'); ties keep xdist's order (more tests first)."""
     def expected(item):
-        name, tests = item
-        return durations.get(module_of(name), DEFAULT_TEST_S * len(tests))
+        _, tests = item
+        return sum(durations.get(module, DEFAULT_TEST_S * n)
+                   for module, n in Counter(map(module_of, tests)).items())
     by_count = sorted(scopes.items(), key=lambda item: -len(item[1]))
     return dict(sorted(by_count, key=lambda item: -expected(item)))
 
@@ -50,6 +66,9 @@ class LongestFirstScheduling(LoadScopeScheduling):
         super().__init__(config, log)
         self.durations = known_durations()
         self.ordered = False
+
+    def _split_scope(self, nodeid):
+        return scope_of(nodeid)
 
     def _assign_work_unit(self, node):
         # xdist fills its whole work queue, in its order, before the first assignment

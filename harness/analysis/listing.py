@@ -5,8 +5,9 @@ PARSE-NAME whose actions examine BLK, >IN, HERE (DP), STATE and CONTEXT and
 continue: one event each time the interpreter (or a defining word) takes a
 name from the source. The words that went into the dictionary between one event
 and the next belong to the name taken at the first of them, hence to the block
-line where that name stands. A second, identical run (the machine is
-deterministic) dumps those words and has SIMH disassemble the parts that were
+line where that name stands. A second run of the same command, without the
+breakpoint on PARSE-NAME (the machine is deterministic: the same instructions
+lay down the same words), dumps those words and has SIMH disassemble the parts that were
 assembled: bytes laid down while CONTEXT was ASSEMBLER and STATE was 0 (inside
 a CODE word), the machine code. Everything else is headers and threaded code
 (addresses of words), annotated with the names of the words they point at.
@@ -89,18 +90,20 @@ def _watched(sym):
     return [sym[n] + BODY for n in ("BLK", ">IN", "DP", "STATE", "CONTEXT")]
 
 
-def _load_script(sym, disk, kernel, after_load=""):
+def _load_script(sym, disk, kernel, after_load="", watch=True):
+    """Boot, type the command, stop at the prompt after it: with `watch`, stopping
+    at each PARSE-NAME to examine the watched variables."""
     vals = ";".join(f"ex {a:o}" for a in _watched(sym))
+    during = (f"nobreak {sym['QUERY']:o}\nbreak {sym['PARSE-NAME']:o};{vals};cont\n"
+              f"break {sym['QUERY']:o}\n" if watch else "")
     return (f"attach rl0 {disk}\nload {kernel}\n"
-            f"break {sym['QUERY']:o}\ngo\nnobreak {sym['QUERY']:o}\n"
-            f"break {sym['PARSE-NAME']:o};{vals};cont\n"
-            f"break {sym['QUERY']:o}\ncont\nnobreak all\n" + after_load)
+            f"break {sym['QUERY']:o}\ngo\n{during}cont\nnobreak all\n" + after_load)
 
 
-def _run(sym, image, kernel, after_load="", command="1000 LOAD"):
+def _run(sym, image, kernel, after_load="", command="1000 LOAD", watch=True):
     with tempfile.TemporaryDirectory(prefix="listing-") as tmp:
         disk = fresh_disk(tmp, source=image)   # the image itself is never written
-        return simh.run(_load_script(sym, disk, kernel, after_load),
+        return simh.run(_load_script(sym, disk, kernel, after_load, watch),
                         keyboard=command + "\r", timeout=120)
 
 
@@ -332,7 +335,7 @@ def make_listing(first=1000, last=1012, image=PRISTINE, kernel=KERNEL, kernel_ma
     code_spans = [s for ss in spans.values() for s in ss if s.code]
     dump = f"ex {start:o}-{final_here - 2:o}\n" + "".join(
         f"ex -m {s.start:o}-{s.end - 2:o}\n" for s in code_spans)
-    second_run = _run(sym, image, kernel, dump, command)
+    second_run = _run(sym, image, kernel, dump, command, watch=False)
     tail = second_run[second_run.rindex(f"Breakpoint, PC: {sym['QUERY']:06o}"):]
     words = {int(a, 8): int(v, 8) for a, v in WORD.findall(tail)
              if start <= int(a, 8) < final_here}

@@ -7,16 +7,20 @@ send the session's token (the file `token`, mode 0600, new at every launch):
 ConsoleBridge(directory, token) serves; add(name, child) adds an 11/03 (a
 pexpect child); type(name, line) types a line as if the user had (the boot
 lines); poll() runs the bridge for a moment (the launcher calls it from its
-thread until close()). What a machine printed is kept (the last REPLAY bytes,
-also appended to `name.log`) and replayed to a client when it joins; one client
-per console at a time (a second is told and refused). Keys are queued and
-written when the pty takes them: nothing typed is dropped. A client leaves with
-^] (the machine runs on); ^E there gives that 11/03's sim> (and, as long as it
-stays there, holds all five machines at their next boundary).
+thread until close()); wait_for(predicate, timeout), from another thread, waits
+until what the polls saw makes predicate() true (a console said something, or
+closed), and wake() has a poll waiting in select look again at once. What a
+machine printed is kept (the last REPLAY bytes, also appended to `name.log`)
+and replayed to a client when it joins; one client per console at a time (a
+second is told and refused). Keys are queued and written when the pty takes
+them: nothing typed is dropped. A client leaves with ^] (the machine runs on);
+^E there gives that 11/03's sim> (and, as long as it stays there, holds all
+five machines at their next boundary).
 """
 import os
 import select
 import socket
+import threading
 from pathlib import Path
 
 REPLAY = 1 << 16
@@ -101,19 +105,35 @@ class ConsoleBridge:
     def __init__(self, directory, token):
         self.directory, self.token = Path(directory), token
         self.consoles = {}
+        self.changed = threading.Condition()        # notified after a poll that read
+        self._wake_r, self._wake_w = os.pipe()
+        os.set_blocking(self._wake_r, False)
+        os.set_blocking(self._wake_w, False)
 
     def add(self, name, child):
         self.consoles[name] = _Console(name, child, self.directory, self.token)
 
     def type(self, name, line):
         self.consoles[name].pending += line.encode() + b"\r"
+        self.wake()
+
+    def wake(self):
+        try:
+            os.write(self._wake_w, b".")
+        except BlockingIOError:              # wakes enough are waiting already
+            pass
+
+    def wait_for(self, predicate, timeout):
+        """predicate()'s last value, once it holds or `timeout` seconds have passed."""
+        with self.changed:
+            return self.changed.wait_for(predicate, timeout)
 
     def when_printed(self, name, pattern, callback):
         """Call `callback` once the console of `name` prints `pattern` (bytes) from now on."""
         self.consoles[name].watchers.append([pattern, b"", callback])
 
     def poll(self, timeout=0.05):
-        reads, writes, who = [], [], {}
+        reads, writes, who = [self._wake_r], [], {self._wake_r: (None, "wake")}
         for c in self.consoles.values():
             if c.alive:
                 reads.append(c.child.child_fd); who[c.child.child_fd] = (c, "out")
@@ -125,7 +145,9 @@ class ConsoleBridge:
         ready, writable, _ = select.select(reads, writes, [], timeout)
         for r in ready:
             c, what = who[r]
-            if what == "out":
+            if what == "wake":
+                os.read(self._wake_r, 4096)
+            elif what == "out":
                 try:
                     data = os.read(c.child.child_fd, 1 << 16)
                 except BlockingIOError:
@@ -142,6 +164,9 @@ class ConsoleBridge:
                 c.from_client()
         for w in writable:
             who[w][0].write_pending()
+        if ready:
+            with self.changed:
+                self.changed.notify_all()
 
     def close(self):
         for c in self.consoles.values():
@@ -149,6 +174,8 @@ class ConsoleBridge:
             c.listener.close()
             c.log.close()
             (self.directory / f"{c.name}.sock").unlink(missing_ok=True)
+        os.close(self._wake_r)
+        os.close(self._wake_w)
 
 
 def join(directory, name, stdin_fd=0, stdout_fd=1):

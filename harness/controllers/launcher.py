@@ -29,7 +29,7 @@ from harness.controllers.bridge import ConsoleBridge
 from harness.controllers.coordinator import CONTROLLERS, Coordinator, member_settings
 from harness.controllers.members import SESSION_OVER
 from harness.controllers.scripted import axis_blocks_present
-from harness.machine import simh
+from harness.machine import pty_child, simh
 from harness.machine.build import (CONTROLLERS_DIR, KERNEL, KERNEL_1103, PDP11, PRISTINE_DISK,
                                     fresh_disk)
 from harness.machine.console_session import session
@@ -104,22 +104,21 @@ class Launch:
     def close(self):
         """End the 11/03s (QUIT once the session is over), the bridge, the coordinator."""
         deadline = time.monotonic() + END_WAIT
-        for name, child in self.children.items():
+        for name in self.children:
             console = self.bridge.consoles[name]
-            while console.alive and time.monotonic() < deadline:
-                if any(s.encode() in console.shown for s in SESSION_OVER):
-                    self.bridge.type(name, "quit")
-                    break
-                time.sleep(0.05)
-        for name, child in self.children.items():
-            while self.bridge.consoles[name].alive and time.monotonic() < deadline:
-                time.sleep(0.05)
-            if self.bridge.consoles[name].alive:
+            if self.bridge.wait_for(lambda c=console: not c.alive or any(
+                    s.encode() in c.shown for s in SESSION_OVER), deadline - time.monotonic()) \
+                    and console.alive:
+                self.bridge.type(name, "quit")
+        for name in self.children:
+            console = self.bridge.consoles[name]
+            if not self.bridge.wait_for(lambda c=console: not c.alive, deadline - time.monotonic()):
                 say(f"11/03 {name} did not stop within {END_WAIT} s: ended")
         self._running = False
+        self.bridge.wake()
         self._thread.join()
         for child in self.children.values():
-            child.close(force=True)
+            pty_child.close(child)
         self.bridge.close()
         self.coordinator.stop()
         self.coordinator.__exit__()

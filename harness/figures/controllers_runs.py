@@ -20,7 +20,7 @@ import sys
 from dataclasses import dataclass
 from pathlib import Path
 
-from harness.analysis import plots, trace
+from harness.analysis import trace
 from harness.analysis.settling import arrival, show_times
 from harness.controllers.scripted import run_five_file, split_joined
 from harness.machine.build import RATE
@@ -90,6 +90,7 @@ def row(name, k, arch, move):
 
 def figures(stem, results):
     """The three side-by-side figures from results[(name, arch)] = (moves, csv)."""
+    from harness.analysis import plots       # matplotlib: imported only when drawing
     traces = {key: trace.read(csv) for key, (_, csv) in results.items()}
 
     def both(name, k, after):

@@ -12,6 +12,7 @@ import urllib.request
 import pexpect
 import pytest
 
+from harness.machine import pty_child
 from harness.machine.build import KERNEL_1103, PRISTINE_DISK, ROOT, fresh_disk
 
 pytestmark = pytest.mark.skipif(not KERNEL_1103.exists(), reason="no build/kernel-1103.lda")
@@ -43,7 +44,7 @@ def leave(child):
     child.send("BYE\r")
     child.expect("Bye.")
     child.expect(pexpect.EOF)
-    child.close()
+    pty_child.close(child)                  # it has exited: no pexpect pause
     return child.exitstatus
 
 

@@ -49,8 +49,9 @@ def simh_disassembly(m, spans):
     m.child.sendcontrol("e")
     m.child.expect(SIM_PROMPT)
     found = {}
-    for first, last in spans:
-        m.child.sendline(f"e -m {first:o}-{last:o}")
+    ranges = [f"{first:o}-{last:o}" for first, last in spans]
+    for i in range(0, len(ranges), 50):             # an address list: 50 spans a command
+        m.child.sendline("e -m " + ",".join(ranges[i:i + 50]))
         m.child.expect(SIM_PROMPT)
         found.update((int(a, 8), t) for a, t in SIMH_LINE.findall(m.child.before))
     m.child.sendline("cont")

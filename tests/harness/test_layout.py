@@ -3,8 +3,12 @@ packages below it, never sideways or up; no module imports itself round a circle
 every name imported from a harness module exists there. Read from the source with
 ast (imports inside functions included), nothing imported."""
 import ast
+import functools
+import gc
 import re
 from pathlib import Path
+
+import pytest
 
 HARNESS = Path(__file__).resolve().parents[2] / "harness"
 
@@ -23,12 +27,30 @@ def modules():
     return {module_name(p): p for p in sorted(HARNESS.rglob("*.py"))}
 
 
+@functools.lru_cache(maxsize=None)
+def parsed(path):
+    """The file's ast: each file is read and parsed once, whichever checks walk it.
+    The trees kept are frozen out of the cyclic collector's way (they hold no cycles,
+    and its full collections would walk them all again and again) until the module's
+    tests are done (forget_the_trees)."""
+    tree = ast.parse(path.read_text(), str(path))
+    gc.freeze()
+    return tree
+
+
+@pytest.fixture(scope="module", autouse=True)
+def forget_the_trees():
+    yield
+    parsed.cache_clear()
+    gc.unfreeze()
+
+
 def imported(path, known):
     """The harness modules (or packages) that the file at path imports."""
     name = module_name(path)
     package = name if path.name == "__init__.py" else name.rpartition(".")[0]
     found = set()
-    for node in ast.walk(ast.parse(path.read_text(), str(path))):
+    for node in ast.walk(parsed(path)):
         if isinstance(node, ast.Import):
             found |= {a.name for a in node.names}
         elif isinstance(node, ast.ImportFrom):
@@ -121,10 +143,10 @@ def missing_names(files):
     """`from harness.X import name` in files where X defines no name and has no
     submodule name."""
     known = modules()
-    defined = {m: top_level_names(ast.parse(p.read_text())) for m, p in known.items()}
+    defined = {m: top_level_names(parsed(p)) for m, p in known.items()}
     wrong = []
     for path in files:
-        for node in ast.walk(ast.parse(path.read_text(), str(path))):
+        for node in ast.walk(parsed(path)):
             if isinstance(node, ast.ImportFrom) and not node.level and node.module in known:
                 wrong += [f"{path}:{node.lineno}: {node.module} has no {a.name}"
                           for a in node.names if a.name not in defined[node.module]
@@ -185,14 +207,13 @@ def assigned_names(tree):
             for n in ast.walk(t) if isinstance(n, ast.Name)}
 
 
-def facts_away_from_home(sources):
+def facts_away_from_home(trees):
     """`module: NAME` for each fact assigned, `module: 'literal'` for each fact's
     literal in code, and `module: root from __file__` outside the fact's home.
-    sources: module name -> source text."""
+    trees: module name -> its parsed source."""
     home_of = {name: home for home, names in FACT_HOMES.items() for name in names}
     wrong = []
-    for module, text in sorted(sources.items()):
-        tree = ast.parse(text)
+    for module, tree in sorted(trees.items()):
         wrong += [f"{module}: {n}" for n in sorted(assigned_names(tree))
                   if home_of.get(n, module) != module]
         docstrings = {id(node.body[0].value) for node in ast.walk(tree)
@@ -210,18 +231,18 @@ def facts_away_from_home(sources):
 
 
 def test_each_fact_has_one_home():
-    wrong = facts_away_from_home({m: p.read_text() for m, p in modules().items()})
+    wrong = facts_away_from_home({m: parsed(p) for m, p in modules().items()})
     assert not wrong, ("facts defined away from their home (import them from "
                        "harness.machine.build, kernel_layout or plant_rows):\n" + "\n".join(wrong))
 
 
 def test_the_fact_check_sees_a_copy():
-    assert facts_away_from_home({"harness.lab.x": 'RATE = 300_000\nD = "build/robot.dsk"\n'
-                                 'R = Path(__file__).resolve().parents[2]\n'}) == [
+    assert facts_away_from_home({"harness.lab.x": ast.parse(
+        'RATE = 300_000\nD = "build/robot.dsk"\nR = Path(__file__).resolve().parents[2]\n')}) == [
         "harness.lab.x: RATE", "harness.lab.x: 'robot.dsk'", "harness.lab.x: root from __file__"]
-    assert facts_away_from_home({"harness.lab.x": '"""from build/robot.dsk"""\n'
-                                 "from harness.machine.build import RATE\n"
-                                 'HELP = "default: build/robot.dsk"\n'}) == []
+    assert facts_away_from_home({"harness.lab.x": ast.parse(
+        '"""from build/robot.dsk"""\nfrom harness.machine.build import RATE\n'
+        'HELP = "default: build/robot.dsk"\n')}) == []
 
 
 def test_every_package_has_its_line_in_the_readme():

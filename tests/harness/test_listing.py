@@ -57,13 +57,12 @@ def test_headers_and_names_of_new_words(listing):
 
 
 @pytest.mark.parametrize("blocks", ["1013", "1012-1000", "10x", "1019-1020"])
-def test_cli_bad_blocks_is_a_usage_error(tmp_path, blocks):
+def test_cli_bad_blocks_is_a_usage_error(tmp_path, cli, blocks):
     out = tmp_path / "x.lst"
-    r = subprocess.run([sys.executable, "-m", "harness", "listing", "--blocks", blocks,
-                        "--out", str(out)], cwd=ROOT, capture_output=True, text=True)
-    assert r.returncode == 2
-    assert r.stderr.startswith("usage: python -m harness listing")
-    assert "argument --blocks" in r.stderr
+    status, _, err = cli("listing", "--blocks", blocks, "--out", out)
+    assert status == 2
+    assert err.startswith("usage: python -m harness listing")
+    assert "argument --blocks" in err
     assert not out.exists()
 
 
@@ -90,6 +89,8 @@ def test_blocks_beyond_the_appendix_are_loaded_by_chain():
 
 
 def test_cli_writes_one_block(tmp_path):
+    """The command line's own start: a real `python -m harness` (the other tests
+    call it in this process, the `cli` fixture)."""
     out = tmp_path / "b.lst"
     r = subprocess.run([sys.executable, "-m", "harness", "listing", "--blocks", "1009",
                         "--out", str(out)], cwd=ROOT, capture_output=True, text=True)
@@ -99,19 +100,16 @@ def test_cli_writes_one_block(tmp_path):
     assert "Block 1010" not in text
 
 
-def test_blocks_that_need_others_first_say_so_and_take_load(tmp_path):
+def test_blocks_that_need_others_first_say_so_and_take_load(tmp_path, cli):
     out = tmp_path / "l.lst"
-    r = subprocess.run([sys.executable, "-m", "harness", "listing", "--blocks", "1060",
-                        "--out", str(out)], cwd=ROOT, capture_output=True, text=True)
-    assert r.returncode == 1 and "undefined word: Via" in r.stderr and "--load N" in r.stderr
-    r = subprocess.run([sys.executable, "-m", "harness", "listing", "--blocks", "1060",
-                        "--load", "1040", "--out", str(out)], cwd=ROOT, capture_output=True,
-                       text=True)
-    assert r.returncode == 0, r.stderr
+    status, _, err = cli("listing", "--blocks", "1060", "--out", out)
+    assert status == 1 and "undefined word: Via" in err and "--load N" in err
+    status, _, err = cli("listing", "--blocks", "1060", "--load", "1040", "--out", out)
+    assert status == 0, err
     assert out.read_text().startswith("Block 1060\n")
 
 
-def test_cli_lists_a_block_of_the_users_own_disk(tmp_path):
+def test_cli_lists_a_block_of_the_users_own_disk(tmp_path, cli):
     """--disk: a block the user wrote (here 1100, packed into a copy of the disk)
     listed beside what it compiled; the image itself is only read."""
     disk = fresh_disk(tmp_path, "mine.dsk")
@@ -119,14 +117,12 @@ def test_cli_lists_a_block_of_the_users_own_disk(tmp_path):
         image.seek(1100 * BLOCK_BYTES)
         image.write(text_to_block(": Twice ( n -- 2n )   DUP + ;\n"))
     before = disk.read_bytes()
-    r = subprocess.run([sys.executable, "-m", "harness", "listing", "--disk", str(disk),
-                        "--blocks", "1100"], cwd=ROOT, capture_output=True, text=True)
-    assert r.returncode == 0, r.stderr
-    assert "header of Twice" in r.stdout and "DUP" in r.stdout
+    status, out, err = cli("listing", "--disk", disk, "--blocks", "1100")
+    assert status == 0, err
+    assert "header of Twice" in out and "DUP" in out
     assert disk.read_bytes() == before
-    r = subprocess.run([sys.executable, "-m", "harness", "listing", "--blocks", "1100"],
-                       cwd=ROOT, capture_output=True, text=True)      # not on the pristine disk
-    assert r.returncode == 2 and "argument --blocks" in r.stderr
+    status, _, err = cli("listing", "--blocks", "1100")           # not on the pristine disk
+    assert status == 2 and "argument --blocks" in err
 
 
 def test_thread_operands_name_nothing():

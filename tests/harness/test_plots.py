@@ -1,14 +1,22 @@
 """The figures, inspected as matplotlib objects (axes, series, labels), and the
-files they are saved to."""
+files they are saved to. (harness.analysis.plots comes from a fixture: matplotlib
+is imported when these tests run, not when make test's every worker collects
+every module.)"""
 import xml.etree.ElementTree as ET
 
 import numpy as np
 import pytest
 
 from harness.analysis import moves as mv
-from harness.analysis import plots, trace
+from harness.analysis import trace
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
+
+
+@pytest.fixture(scope="module")
+def plots():
+    from harness.analysis import plots
+    return plots
 
 
 @pytest.fixture(scope="module")
@@ -24,7 +32,7 @@ def texts(ax):
     return {t.get_text() for t in ax.texts}
 
 
-def test_moves_figure_long_and_short_side_by_side(tr):
+def test_moves_figure_long_and_short_side_by_side(plots, tr):
     fig = plots.moves_figure(tr, "X")
     panels = [ax for ax in fig.axes if ax.get_lines()]
     assert len(panels) == 2
@@ -48,7 +56,7 @@ def test_moves_figure_long_and_short_side_by_side(tr):
         np.testing.assert_allclose(marks, expected)
 
 
-def test_moves_figure_one_panel_per_window(tr):
+def test_moves_figure_one_panel_per_window(plots, tr):
     x = tr.axis("X")
     _, short = mv.long_and_short(mv.find_moves(x))
     fig = plots.moves_figure(tr, "X", windows=[(short.t0 - 0.01, None)])
@@ -60,7 +68,7 @@ def test_moves_figure_one_panel_per_window(tr):
         plots.moves_figure(tr, "Y")
 
 
-def test_time_figure_rows_per_axis(tr):
+def test_time_figure_rows_per_axis(plots, tr):
     fig = plots.time_figure(tr, "XY", windows=[(0.5, 1.5)])
     assert len(fig.axes) == 4
     pos_x, vel_x, pos_y, _ = fig.axes
@@ -72,7 +80,7 @@ def test_time_figure_rows_per_axis(tr):
     assert t.min() >= 0.5 and t.max() <= 1.5
 
 
-def test_zero_figure_held_codes_and_offsets(tr):
+def test_zero_figure_held_codes_and_offsets(plots, tr):
     fig = plots.zero_figure(tr, "XY", offsets={"X": 3.0})
     ax_x, ax_y = fig.axes
     assert ax_x.get_ylabel() == "DAC code (2048 = 0 V)" and "0-Vel" in fig.get_suptitle()
@@ -90,7 +98,7 @@ def test_zero_figure_held_codes_and_offsets(tr):
     np.testing.assert_array_equal(series["DAC code, every row"].get_ydata(), tr.axis("X").dac)
 
 
-def test_save_writes_valid_png_and_svg(tr, tmp_path):
+def test_save_writes_valid_png_and_svg(plots, tr, tmp_path):
     fig = plots.time_figure(tr, "X")
     png, svg = tmp_path / "f.png", tmp_path / "f.svg"
     plots.save(fig, [png, svg])
@@ -99,21 +107,21 @@ def test_save_writes_valid_png_and_svg(tr, tmp_path):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["f.png", "f.svg"]
 
 
-def test_save_failure_leaves_nothing(tr, tmp_path):
+def test_save_failure_leaves_nothing(plots, tr, tmp_path):
     fig = plots.time_figure(tr, "X")
     with pytest.raises(ValueError):
         plots.save_all([(fig, [tmp_path / "ok.png", tmp_path / "bad.xyz"])])
     assert list(tmp_path.iterdir()) == []
 
 
-def test_same_figure_same_svg(tr, tmp_path):
+def test_same_figure_same_svg(plots, tr, tmp_path):
     """Built and saved twice, a figure gives the same bytes (fixed SVG ids, no date)."""
     for name in ("a.svg", "b.svg"):
         plots.save(plots.zero_figure(tr, "Y"), [tmp_path / name])
     assert (tmp_path / "a.svg").read_bytes() == (tmp_path / "b.svg").read_bytes()
 
 
-def test_moves_figure_says_when_there_is_no_short_move(tmp_path):
+def test_moves_figure_says_when_there_is_no_short_move(plots, tmp_path):
     """The 1983 servo starts every move at full speed: both moves reach MaxVel,
     so one panel, and the title says why; z-style drift at DAC 2048 is no move."""
     rows = ["time_s,axis,dac,vcmd,vel,pos,counter"]

@@ -1,8 +1,10 @@
 """make test's order (tests/schedule.py): the longest modules first, by the last
-run's wall seconds; modules it has not seen by their number of tests."""
+run's wall seconds; modules it has not seen by their number of tests; the
+modules that draw figures on one worker."""
 from types import SimpleNamespace
 
-from tests.schedule import DEFAULT_TEST_S, DurationLog, known_durations, longest_first
+from tests.schedule import (DEFAULT_TEST_S, SHARED_START, DurationLog, known_durations,
+                            longest_first, scope_of)
 
 
 def scopes(**counts):
@@ -23,6 +25,17 @@ def test_known_modules_go_longest_first_and_new_ones_by_their_count():
 def test_without_durations_the_order_is_xdists_most_tests_first():
     queue = scopes(a=3, b=7, c=5)
     assert list(longest_first(queue, {})) == ["tests/b.py", "tests/c.py", "tests/a.py"]
+
+
+def test_the_modules_that_draw_go_together_and_count_together():
+    drawing = SHARED_START["matplotlib"]
+    assert {scope_of(f"{m}::t") for m in drawing} == {"matplotlib"}
+    assert scope_of("tests/harness/test_trace.py::t[x]") == "tests/harness/test_trace.py"
+    queue = {"matplotlib": {f"{m}::t{i}": False for m in drawing for i in range(2)},
+             **scopes(slow=1)}
+    durations = {drawing[0]: 2.0, drawing[1]: 1.5, "tests/slow.py": 3.0}
+    # 2 + 1.5 + (the third, unknown) 2 * DEFAULT_TEST_S > 3
+    assert list(longest_first(queue, durations)) == ["matplotlib", "tests/slow.py"]
 
 
 def test_the_log_sums_each_modules_phases_and_keeps_modules_this_run_skipped(tmp_path):
