@@ -71,7 +71,10 @@ def serve(status_path, directory, port=0):
             self.wfile.write(body)
 
     server = ThreadingHTTPServer(("127.0.0.1", port), Handler)
-    threading.Thread(target=server.serve_forever, name="controllers-page", daemon=True).start()
+    # shutdown() waits for serve_forever's next look at its flag: 50 ms, not the default
+    # 0.5 s, at every leave of a --lab session
+    threading.Thread(target=server.serve_forever, kwargs={"poll_interval": 0.05},
+                     name="controllers-page", daemon=True).start()
 
     def stop():
         server.shutdown()
