@@ -12,7 +12,6 @@ import io
 import json
 import os
 import re
-import time
 
 import pytest
 
@@ -77,30 +76,12 @@ def test_a_teacher_switches_the_rack_at_make_run_controllers(tmp_path):
     """^E, SET PLANT POWER=OFF, CONT at `make run CONTROLLERS=4`: the coordinator's
     rack goes off (its status, the lab page's source; SHOW PLANT at the 11/23), a move
     waits; ^E, SET PLANT POWER=ON, CONT: it completes."""
-    from harness.machine.build import PRISTINE_DISK, fresh_disk
-    from harness.machine.console_session import probe_prompt
-    from tests.controllers.test_lockstep_launch import harness, leave
-    disk = fresh_disk(tmp_path, "main.dsk", source=PRISTINE_DISK)
-    session = tmp_path / "session"
-    child = harness("controllers", "launch", "--fast", "--busy-wait", "5", "--disk", str(disk),
-                    "--session-dir", str(session))
-    child.timeout = 120
-    child.expect(" ok\r\n")
-    deadline = time.monotonic() + 120                 # the four servos booted (their logs)
-    while not all("servo on axis" in (session / f"{a}.log").read_text("latin-1")
-                  for a in "xyzt"):
-        assert time.monotonic() < deadline, "the 11/03s did not boot their servos"
-        time.sleep(0.2)
+    from tests.controllers.test_lockstep_launch import launch_booted, leave
+    from tests.run.common import simh_command
+    child, _, session = launch_booted(tmp_path)
 
     def at_sim(command):
-        child.send("\x05")
-        child.expect("sim> ")
-        child.send(command + "\r")
-        child.expect("sim> ")
-        shown = child.before
-        child.send("cont\r")
-        assert probe_prompt(child) == 0               # running again (CONT's TCSAFLUSH)
-        return shown
+        return simh_command(child, command)
 
     for line in ("1200 LOAD", "Set.Up.Robot"):
         child.send(line + "\r")

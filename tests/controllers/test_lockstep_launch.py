@@ -40,6 +40,27 @@ def five(tmp_path):
         child.close(force=True)
 
 
+def launch_booted(tmp_path):
+    """`controllers launch` typing the 11/03s' boot lines, once their four servos
+    have said so in their logs: the child, the 11/03s' pids, the session folder."""
+    disk = fresh_disk(tmp_path, "main.dsk", source=PRISTINE_DISK)
+    session = tmp_path / "session"
+    child = harness("controllers", "launch", "--fast", "--busy-wait", "5", "--disk", str(disk),
+                    "--session-dir", str(session))
+    child.timeout = 120
+    pids = {}
+    for _ in range(4):
+        child.expect(r"11/03 (\w): pid (\d+)")
+        pids[child.match.group(1)] = int(child.match.group(2))
+    child.expect(" ok\r\n")
+    deadline = time.monotonic() + 120
+    while not all("servo on axis" in (session / f"{a}.log").read_text("latin-1")
+                  for a in "xyzt"):
+        assert time.monotonic() < deadline, "the 11/03s did not boot their servos"
+        time.sleep(0.2)
+    return child, pids, session
+
+
 def leave(child):
     child.send("BYE\r")
     child.expect("Bye.")

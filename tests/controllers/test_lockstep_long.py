@@ -18,7 +18,7 @@ from harness.analysis import regression
 from harness.controllers.scripted import run_five
 from harness.machine import script
 from harness.machine.build import KERNEL_1103
-from tests.controllers.test_lockstep_launch import harness, leave
+from tests.controllers.test_lockstep_launch import launch_booted, leave
 
 pytestmark = pytest.mark.skipif(not os.environ.get("CONTROLLERS_LONG"),
                                 reason="the long five-machine runs run with make test-controllers-long")
@@ -43,22 +43,7 @@ def test_the_move_twice_is_byte_identical_and_complete(tmp_path):
 
 
 def test_a_kill_during_the_servos_is_reported_and_the_rest_goes_on(tmp_path):
-    from harness.machine.build import PRISTINE_DISK, fresh_disk
-    disk = fresh_disk(tmp_path, "main.dsk", source=PRISTINE_DISK)
-    session = tmp_path / "session"
-    child = harness("controllers", "launch", "--fast", "--busy-wait", "5", "--disk", str(disk),
-                    "--session-dir", str(session))
-    child.timeout = 120
-    pids = {}
-    for _ in range(4):
-        child.expect(r"11/03 (\w): pid (\d+)")
-        pids[child.match.group(1)] = int(child.match.group(2))
-    child.expect(" ok\r\n")
-    deadline = time.monotonic() + 120                 # the four servos booted (their logs)
-    while not all("servo on axis" in (session / f"{a}.log").read_text("latin-1")
-                  for a in "xyzt"):
-        assert time.monotonic() < deadline, "the 11/03s did not boot their servos"
-        time.sleep(0.2)
+    child, pids, session = launch_booted(tmp_path)
     for line, answer in (("1200 LOAD", " ok"), ("Set.Up.Robot", " ok"),
                          ("2000 1000 800 0 Abs.Move", " ok")):
         child.send(line + "\r")

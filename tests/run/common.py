@@ -66,3 +66,16 @@ def outlived(child, seconds=30):
     """Wait for a pexpect child whose terminal was closed to exit; True if it
     is still running after `seconds` (it outlived its terminal)."""
     return not pty_child.exited(child, seconds)
+
+
+def simh_command(child, command):
+    """^E, one SIMH command, CONT (and the machine running again); what it printed."""
+    from harness.machine.console_session import probe_prompt
+    child.send("\x05")
+    child.expect("sim> ")
+    child.send(command + "\r")
+    child.expect("sim> ")
+    printed = child.before
+    child.send("cont\r")
+    assert probe_prompt(child) == 0               # running again (CONT's TCSAFLUSH)
+    return printed

@@ -9,7 +9,7 @@ from harness.cli import main
 from harness.machine.console_session import probe_prompt
 from harness.machine.build import fresh_disk
 from tests.run.common import (IDLE_SPEED, ended, failing_fsync_library, harness_console,
-                              needs_build, outlived)
+                              needs_build, outlived, simh_command)
 
 pytestmark = needs_build
 
@@ -207,18 +207,6 @@ def test_missing_disk_is_a_clear_error(tmp_path):
     child = harness_console("--disk", tmp_path / "none.dsk", encoding="latin-1")
     assert ended(child) == 1
     assert "none.dsk: no such disk image" in child.before
-
-
-def simh_command(child, command):
-    """^E, one SIMH command, CONT; what the command printed."""
-    child.send("\x05")
-    child.expect("sim> ")
-    child.send(command + "\r")
-    child.expect("sim> ")
-    printed = child.before
-    child.send("cont\r")
-    assert probe_prompt(child) == 0
-    return printed
 
 
 def test_readme_first_session_with_the_rack_switched_on_by_hand(tmp_path):
