@@ -5,7 +5,7 @@ the command line (`python -m harness regress boot`, goal <= 0.25 s; best of
 five), of a one-line script (`python -m harness run`, goal <= 0.15 s), of the whole regression suite (goal <= 60 s), the real-time factor
 (simulated seconds per wall second for a run that is mostly #wait), the share
 of a core the console's simulator takes idle at the prompt with --fast, and
-the wall time of the whole pytest suite as make test runs it (goal <= 30 s).
+the wall time of the whole pytest suite as make test runs it (issue 19's goal <= 25 s).
 """
 import os
 import subprocess
@@ -123,7 +123,8 @@ def main():
           f"{100 * idle_console_share(line='1000 LOAD Set.Up.Robot'):5.1f} %")
     wall, done = test_suite()
     print(f"  make test (the whole suite, as a user runs it): {wall:6.1f} s, "
-          f"exit status {done.returncode}   (goal <= 30 s)")
+          f"exit status {done.returncode}   (goal <= 25 s; 42.9 s for 845 tests at the "
+          "stop before, 32 s for 579 when the goal was set)")
 
 
 if __name__ == "__main__":
