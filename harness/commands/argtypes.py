@@ -4,14 +4,16 @@ import argparse
 import math
 
 
-def number_above(kind, low, what):
-    """A converter to `kind` (int or float) accepting values > low."""
+def number_above(kind, low, what, at_most=None):
+    """A converter to `kind` (int or float) accepting values > low (and <= at_most
+    when given)."""
     def convert(text):
         try:
             value = kind(text)
         except ValueError:
             value = None
-        if value is None or not value > low or not math.isfinite(value):
+        if value is None or not value > low or not math.isfinite(value) \
+                or (at_most is not None and value > at_most):
             raise argparse.ArgumentTypeError(f"{text!r}: expected {what}")
         return value
     return convert

@@ -4,7 +4,7 @@ import shutil
 from pathlib import Path
 
 from harness.blocks.disk import DiskError, check_image, check_not_held
-from harness.commands.argtypes import positive
+from harness.commands.argtypes import number_above, positive
 from harness.machine.console_session import BUSY_WAIT, HINT, IDLE_SPEED_MAX, RACK_HINT, session
 from harness.machine.build import (PDP11, PDP11_TIMED, PRISTINE_DISK as PRISTINE,
                                     WORKING_DISK as WORK_DISK)
@@ -62,13 +62,9 @@ def configure(parser):
     parser.set_defaults(run=run)
 
 
-def idle_speed(text):
-    """--idle-speed's value: SET CLK IDLESPEED's range (pdp11-devices/bus/kw11l.c)."""
-    value = int(text) if text.isdigit() else 0
-    if not 1 <= value <= IDLE_SPEED_MAX:
-        raise argparse.ArgumentTypeError(f"{text!r}: expected a whole number from 1 to "
-                                         f"{IDLE_SPEED_MAX}")
-    return value
+# --idle-speed's value: SET CLK IDLESPEED's range (pdp11-devices/bus/kw11l.c)
+idle_speed = number_above(int, 0, f"a whole number from 1 to {IDLE_SPEED_MAX}",
+                          at_most=IDLE_SPEED_MAX)
 
 
 def working_disk(requested, read_only=False):

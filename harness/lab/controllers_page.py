@@ -35,10 +35,7 @@ def read_view(status_path, directory):
             logs[m] = (directory / f"{m}.log").read_bytes()[-8192:].decode("latin-1")
         except OSError:
             pass
-    shown = view(status, logs)
-    if status is not None:            # the rack's switch (SET PLANT POWER at any sim>)
-        shown["rack_on"] = bool(status.get("power", 1))
-    return shown
+    return view(status, logs)
 
 
 def serve(status_path, directory, port=0):

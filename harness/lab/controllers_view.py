@@ -66,6 +66,7 @@ def view(status, logs):
     if status is None:
         return {"started": False}
     return {"started": True, "time_s": status["time_s"], "quantum": status["quantum"],
+            "rack_on": bool(status["power"]),   # SET PLANT POWER at any machine's sim>
             "machines": [{"name": m, "state": status["members"].get(m, "absent"),
                           "console": tail(logs.get(m, ""))} for m in MEMBERS],
             "servo": [servo_row(a) for a in status["axes"]]}

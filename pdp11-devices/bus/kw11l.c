@@ -81,18 +81,28 @@ static t_stat kwl_show_state (FILE *st, UNIT *uptr, int32 val, void *desc);
 static t_stat kwl_set_realtime (UNIT *uptr, int32 val, char *cptr, void *desc);
 static t_stat kwl_set_idle_speed (UNIT *uptr, int32 val, char *cptr, void *desc);
 static t_stat kwl_show_idle_speed (FILE *st, UNIT *uptr, int32 val, void *desc);
-static t_stat kwl_set_idle_speed (UNIT *uptr, int32 val, char *cptr, void *desc)
+/* A SET value that must be a whole number in lo..hi: SCPE_OK and *x, or the
+   refusal (`why` printed, nothing changed). */
+static t_stat whole_number (const char *cptr, long lo, long hi, const char *why, long *x)
 {
     char *end;
-    long x;
     if (cptr == NULL || *cptr == 0)
         return SCPE_MISVAL;
-    x = strtol (cptr, &end, 10);
-    if (*end != 0 || x < 1 || x > IDLE_SPEED_MAX) {
-        printf ("IDLESPEED must be a whole number from 1 to %d (times the real pace)\n",
-                IDLE_SPEED_MAX);
+    *x = strtol (cptr, &end, 10);
+    if (*end != 0 || *x < lo || *x > hi) {
+        printf ("%s, %ld..%ld\n", why, lo, hi);
         return SCPE_ARG;
     }
+    return SCPE_OK;
+}
+
+static t_stat kwl_set_idle_speed (UNIT *uptr, int32 val, char *cptr, void *desc)
+{
+    long x;
+    t_stat r = whole_number (cptr, 1, IDLE_SPEED_MAX,
+                             "IDLESPEED must be a whole number of times the real pace", &x);
+    if (r != SCPE_OK)
+        return r;
     idle_speed = (int32) x;
     wall_pacer_drop (&pacer);
     return SCPE_OK;
@@ -197,17 +207,12 @@ static t_stat kwl_reset (DEVICE *dptr)
 
 static t_stat kwl_set_rate (UNIT *uptr, int32 val, char *cptr, void *desc)
 {
-    char *end;
-    long r;
-    if (cptr == NULL || *cptr == 0)
-        return SCPE_MISVAL;
-    r = strtol (cptr, &end, 10);
-    if (*end != 0 || r < RATE_MIN || r > RATE_MAX) {
-        printf ("RATE must be a whole number of instructions per second, %d..%d\n",
-                RATE_MIN, RATE_MAX);
-        return SCPE_ARG;
-    }
-    clock_set_rate ((int32) r);                 /* time_base.c: every device is told */
+    long x;
+    t_stat r = whole_number (cptr, RATE_MIN, RATE_MAX,
+                             "RATE must be a whole number of instructions per second", &x);
+    if (r != SCPE_OK)
+        return r;
+    clock_set_rate ((int32) x);                 /* time_base.c: every device is told */
     return SCPE_OK;
 }
 

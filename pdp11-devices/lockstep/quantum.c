@@ -88,6 +88,12 @@ static void remember (ls_history *h, link_wire wire, uint64_t k)
     h->word[h->n % LS_HISTORY] = wire.value;
     h->quantum[h->n % LS_HISTORY] = k;
     h->n++;
+}
+
+/* 11/23 -> 11/03 words: the value that follows a command word is that command's */
+static void latch_command (ls_history *h, link_wire wire)
+{
+    if (!wire.sent) return;
     int code = (int) wire.value - LS_COMMAND_BASE;
     if (h->pending) {
         h->value[h->pending] = wire.value;
@@ -167,7 +173,10 @@ int ls_world_step (ls_world *w, uint64_t k, const ls_up *const ups[LS_MEMBERS],
     int applied = 0;
     apply_events (w, ups, events);
     for (int a = 0; a < LS_LINKS; a++) {
-        if (ups[LS_MAIN]) remember (&w->to_axis[a], ups[LS_MAIN]->links[a], k);
+        if (ups[LS_MAIN]) {
+            remember (&w->to_axis[a], ups[LS_MAIN]->links[a], k);
+            latch_command (&w->to_axis[a], ups[LS_MAIN]->links[a]);
+        }
         if (ups[a]) remember (&w->to_main[a], ups[a]->links[0], k);
     }
     samples_until (w, t_end);

@@ -3,6 +3,9 @@
 
 #include <stdio.h>
 
+#define TEXT_(x) #x
+#define TEXT(x) TEXT_(x)                  /* a number's digits, in a message */
+
 const char *plant_command_apply (plant *pl, const plant_command *c)
 {
     switch (c->kind) {
@@ -17,7 +20,7 @@ const char *plant_command_apply (plant *pl, const plant_command *c)
         return NULL;
     case PC_SAMPLE:
         if (!(c->value >= 0.0 && c->value <= PLANT_SAMPLE_MAX) || c->value != (double) (int) c->value)
-            return "SAMPLE needs a whole number of samples per second, 0..1000";
+            return "SAMPLE needs a whole number of samples per second, 0.." TEXT (PLANT_SAMPLE_MAX);
         return NULL;
     default:
         return "no such setting";

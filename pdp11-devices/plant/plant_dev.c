@@ -406,13 +406,10 @@ static t_stat plant_set_seed (UNIT *uptr, int32 val, char *cptr, void *desc)
 static t_stat plant_set_sample (UNIT *uptr, int32 val, char *cptr, void *desc)
 {
     char *end;
-    long n;
+    long n = -1;                                /* no number: plant_command_apply says why */
     plant_command c = { PC_SAMPLE, 0, 0, 0, 0.0, 0 };
-    if (cptr == NULL || *cptr == 0 || (n = strtol (cptr, &end, 10), *end != 0) ||
-        n < 0 || n > PLANT_SAMPLE_MAX) {
-        printf ("PLANT: SAMPLE needs a whole number of samples per second, 0..%d\n", PLANT_SAMPLE_MAX);
-        return SCPE_ARG;
-    }
+    if (cptr != NULL && *cptr != 0 && (n = strtol (cptr, &end, 10), *end != 0))
+        n = -1;
     c.value = (double) n;
     return refused (apply_setting (&c));
 }

@@ -40,12 +40,13 @@ def test_the_target_stays_while_move_complete_polls_the_status():
 
 
 def test_the_view_names_each_machine_its_state_and_console_tail():
-    status = {"quantum": 500, "time_s": 0.5, "axes": [axis([], [])],
+    status = {"quantum": 500, "time_s": 0.5, "power": 0, "axes": [axis([], [])],
               "members": {"x": "running", "y": "lost", "z": "running", "t": "running",
                           "main": "running"}}
     v = view(status, {"y": "banner\r\n" + "".join(f"line {i}\r\n" for i in range(10))})
     machines = {m["name"]: m for m in v["machines"]}
     assert machines["y"]["state"] == "lost"
+    assert v["rack_on"] is False                     # the coordinator's plant: POWER=OFF
     assert machines["y"]["console"].endswith("line 9\n") and "banner" not in machines["y"]["console"]
     assert view(None, {}) == {"started": False}
 
@@ -59,7 +60,7 @@ def get(url, path, host=None):
 
 
 def test_the_server_answers_with_the_token_only(tmp_path):
-    status = {"quantum": 100, "time_s": 0.1, "axes": [axis([], [])],
+    status = {"quantum": 100, "time_s": 0.1, "power": 1, "axes": [axis([], [])],
               "members": {m: "running" for m in ("x", "y", "z", "t", "main")}}
     (tmp_path / "status.json").write_text(json.dumps(status))
     (tmp_path / "x.log").write_text("11/03 servo on axis x, link at 167760 ok\r\n")
