@@ -92,10 +92,10 @@ $(BUILD)/lockstep-coordinator: $(DEV_DIR)/lockstep/coordinator.c $(LOCKSTEP_PURE
 $(BUILD)/barrier-bench: $(DEV_DIR)/lockstep/barrier_bench.c $(DEV_OBJ)/lockstep/wire_io.o $(DEV_HDRS)
 	@$(CC) $(PLANT_CFLAGS) $(DEV_INCS) -o $@ $< $(DEV_OBJ)/lockstep/wire_io.o
 
-$(BUILD)/lockstep_test: tests/controllers/lockstep_test.c $(LOCKSTEP_PURE) $(DEV_HDRS)
+$(BUILD)/lockstep_test: tests/controllers/lockstep_test.c tests/controllers/world_status.h $(LOCKSTEP_PURE) $(DEV_HDRS)
 	@$(CC) $(PLANT_CFLAGS) $(DEV_INCS) -o $@ $< $(LOCKSTEP_PURE) -lm
 
-$(BUILD)/plant_command_test: tests/controllers/plant_command_test.c $(LOCKSTEP_PURE) $(DEV_HDRS)
+$(BUILD)/plant_command_test: tests/controllers/plant_command_test.c tests/controllers/world_status.h $(LOCKSTEP_PURE) $(DEV_HDRS)
 	@$(CC) $(PLANT_CFLAGS) $(DEV_INCS) -o $@ $< $(LOCKSTEP_PURE) -lm
 
 # pdp11-stock too: the reference the benchmark and tests/test_simh_stock.py use.

@@ -5,6 +5,7 @@
 #define _POSIX_C_SOURCE 200809L   /* open_memstream */
 #include "link.h"
 #include "quantum.h"
+#include "world_status.h"
 #include "plant_row.h"
 
 #include <stdio.h>
@@ -96,11 +97,7 @@ static void world_boundary (void)
     for (char *p = text; *p; p++) rows += *p == '\n';
     CHECK_EQ ("trace rows: header + 2 samples x 4 axes + 1 DAC row", rows, 10);
     CHECK_EQ ("the trace starts with the usual columns", strncmp (text, plant_row_columns, strlen (plant_row_columns)), 0);
-    char *status = NULL;
-    size_t status_size = 0;
-    FILE *sf = open_memstream (&status, &status_size);
-    ls_world_status (sf, &w, 1);
-    fclose (sf);
+    char *status = world_status (&w, 1);
     CHECK_EQ ("the status names the word the 11/23 sent to z", strstr (status, "\"to_11_03\":[[1,511]]") != NULL, 1);
     CHECK_EQ ("the status: every member running", strstr (status, "\"y\":\"running\"") != NULL, 1);
     free (status);
@@ -137,11 +134,7 @@ static void sent_values_outlive_the_history (void)
         ups[LS_MAIN].links[0].value = words[k - 1];
         ls_world_step (&w, k, up_ptrs, no_events, no_commands, downs);
     }
-    char *status = NULL;
-    size_t size = 0;
-    FILE *sf = open_memstream (&status, &size);
-    ls_world_status (sf, &w, 22);
-    fclose (sf);
+    char *status = world_status (&w, 22);
     CHECK_EQ ("the move's words have left the history", strstr (status, "[1,42241]") == NULL, 1);
     CHECK_EQ ("x's sent values: the move's 2000 and the last status poll's 0",
               strstr (status, "\"sent\":{\"1\":2000,\"4\":0}") != NULL, 1);

@@ -7,6 +7,7 @@
 #define _POSIX_C_SOURCE 200809L   /* open_memstream */
 #include "plant_command.h"
 #include "quantum.h"
+#include "world_status.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -117,11 +118,7 @@ static void settings_at_the_boundary (void)
     char *row = strstr (text, at);
     check (row != NULL && strtod (strchr (row + strlen (at), ',') + 1, NULL) > 10000,
            "the row at the boundary itself: still driven (the switch comes after it)");
-    char *status = NULL;
-    size_t status_size = 0;
-    FILE *sf = open_memstream (&status, &status_size);
-    ls_world_status (sf, &w, 2);
-    fclose (sf);
+    char *status = world_status (&w, 2);
     check (strstr (status, "\"power\":0") != NULL, "the status says the rack is off");
     free (status);
     fclose (trace);
