@@ -8,11 +8,13 @@ from pathlib import Path
 import pytest
 
 from harness.blocks.disk import RL02_BYTES
+from tests.cli_in_process import harness_here as harness
 
 ROOT = Path(__file__).resolve().parents[2]
 
 
-def harness(*args):
+def harness_process(*args):
+    """The real `python -m harness ARGV`, for the one test of the start itself."""
     return subprocess.run([sys.executable, "-m", "harness", *map(str, args)], cwd=ROOT,
                           capture_output=True, text=True, timeout=60)
 
@@ -168,9 +170,9 @@ def test_export_of_a_binary_block_names_it(tmp_path):
 
 
 def test_usage_errors_and_help():
-    result = harness("disk")
+    result = harness_process("disk")
     assert result.returncode == 2 and "ACTION" in result.stderr
-    result = harness("--help")
+    result = harness_process("--help")
     assert result.returncode == 0 and "disk" in result.stdout
     assert harness("disk", "export", "--help").stdout.count("--force") >= 1
 

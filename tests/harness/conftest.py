@@ -8,9 +8,9 @@ import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from harness.cli import main  # noqa: E402
 from harness.machine import simh  # noqa: E402
 from servo_program import servo_program, trace_script  # noqa: E402
+from tests.cli_in_process import harness_here  # noqa: E402
 
 
 @pytest.fixture(scope="session")
@@ -23,16 +23,10 @@ def servo_trace(tmp_path_factory):
 
 
 @pytest.fixture
-def cli(capsys):
+def cli():
     """cli(*argv) -> (exit status, stdout, stderr) of `python -m harness ARGV`, run
-    in this process (harness.cli.main, what __main__ calls; a usage error's exit
-    as its status). Each command-line module keeps one real `python -m harness`
-    subprocess for the start itself; the rest need not pay a Python's start each."""
+    in this process (tests/cli_in_process.py)."""
     def run(*argv):
-        try:
-            status = main([str(a) for a in argv])
-        except SystemExit as exit_:
-            status = exit_.code
-        out, err = capsys.readouterr()
-        return status, out, err
+        result = harness_here(*argv)
+        return result.returncode, result.stdout, result.stderr
     return run

@@ -7,6 +7,7 @@ import pytest
 
 from harness.machine.script import MAX_LINE
 from harness.machine.kernel_layout import read_kernel_map
+from tests.cli_in_process import harness_here as harness
 from tests.run.common import PRISTINE, ROOT, needs_build
 
 pytestmark = needs_build
@@ -20,7 +21,8 @@ SCRIPT = """# a short session with both directives
 """
 
 
-def harness(*args):
+def harness_process(*args):
+    """The real `python -m harness ARGV`, for the test of the start itself."""
     return subprocess.run([sys.executable, "-m", "harness", *map(str, args)], cwd=ROOT,
                           capture_output=True, text=True, timeout=120)
 
@@ -32,7 +34,7 @@ def test_two_runs_give_identical_files_and_leave_the_disk_alone(tmp_path):
     outputs = []
     for out in ("a", "b"):
         (tmp_path / out).mkdir()
-        r = harness("run", script, "--out", tmp_path / out)
+        r = harness_process("run", script, "--out", tmp_path / out)
         assert r.returncode == 0, r.stderr
         outputs.append([(tmp_path / out / name).read_bytes()
                         for name in ("s.transcript", "s.trace.csv")])
