@@ -15,9 +15,14 @@ LOADS = {"the 11/23's 1983 servo": range(1000, 1013),
          "the 11/23's link words": range(1200, 1207)}
 
 
+@pytest.fixture(scope="module")
+def blocks():
+    """The pristine disk's written blocks, read once for the three loads."""
+    return list(written_blocks(PRISTINE_DISK))
+
+
 @pytest.mark.parametrize("load", LOADS)
-def test_each_word_of_a_load_is_placed_in_its_own_blocks(load):
-    blocks = list(written_blocks(PRISTINE_DISK))
+def test_each_word_of_a_load_is_placed_in_its_own_blocks(load, blocks):
     loaded = [d for d in definitions(blocks) if d[1] in LOADS[load]]   # dictionary order
     names = [n for n, _, _ in loaded]
     wrong = []

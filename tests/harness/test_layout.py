@@ -38,10 +38,25 @@ def parsed(path):
     return tree
 
 
+# the kinds of node the checks look at: imports, string constants, `.parents`,
+# and what may hold a docstring
+LOOKED_AT = (ast.Import, ast.ImportFrom, ast.Constant, ast.Attribute, ast.Module,
+             ast.FunctionDef, ast.ClassDef)
+
+
+@functools.lru_cache(maxsize=None)
+def looked_at(tree):
+    """The nodes of `tree` of the LOOKED_AT kinds, in ast.walk's order: each tree
+    is walked once, whichever checks look at it (a walk costs as much as the
+    checks that follow it)."""
+    return [node for node in ast.walk(tree) if isinstance(node, LOOKED_AT)]
+
+
 @pytest.fixture(scope="module", autouse=True)
 def forget_the_trees():
     yield
-    parsed.cache_clear()
+    for cached in (parsed, looked_at, graph):
+        cached.cache_clear()
     gc.unfreeze()
 
 
@@ -50,7 +65,7 @@ def imported(path, known):
     name = module_name(path)
     package = name if path.name == "__init__.py" else name.rpartition(".")[0]
     found = set()
-    for node in ast.walk(parsed(path)):
+    for node in looked_at(parsed(path)):
         if isinstance(node, ast.Import):
             found |= {a.name for a in node.names}
         elif isinstance(node, ast.ImportFrom):
@@ -63,7 +78,10 @@ def imported(path, known):
     return {m for m in found if m in known and m != name}
 
 
+@functools.lru_cache(maxsize=None)
 def graph():
+    """module -> the harness modules it imports (made once for the module's tests;
+    read, never changed)."""
     known = modules()
     edges = {name: imported(path, known) for name, path in known.items()}
     # cli imports each subcommand's module by name (importlib), unseen by ast
@@ -146,7 +164,7 @@ def missing_names(files):
     defined = {m: top_level_names(parsed(p)) for m, p in known.items()}
     wrong = []
     for path in files:
-        for node in ast.walk(parsed(path)):
+        for node in looked_at(parsed(path)):
             if isinstance(node, ast.ImportFrom) and not node.level and node.module in known:
                 wrong += [f"{path}:{node.lineno}: {node.module} has no {a.name}"
                           for a in node.names if a.name not in defined[node.module]
@@ -216,10 +234,11 @@ def facts_away_from_home(trees):
     for module, tree in sorted(trees.items()):
         wrong += [f"{module}: {n}" for n in sorted(assigned_names(tree))
                   if home_of.get(n, module) != module]
-        docstrings = {id(node.body[0].value) for node in ast.walk(tree)
+        nodes = looked_at(tree)
+        docstrings = {id(node.body[0].value) for node in nodes
                       if isinstance(node, (ast.Module, ast.FunctionDef, ast.ClassDef))
                       and node.body and isinstance(node.body[0], ast.Expr)}
-        for node in ast.walk(tree):
+        for node in nodes:
             if isinstance(node, ast.Constant) and isinstance(node.value, str) \
                     and id(node) not in docstrings and not any(c.isspace() for c in node.value):
                 wrong += [f"{module}: {lit!r}" for lit, home in FACT_LITERALS.items()
