@@ -114,9 +114,10 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         self.line_limit = line_limit
         self._tmp = tempfile.TemporaryDirectory(prefix="scripted-machine-")
         self._feed = Path(self._tmp.name) / "feed.ini"
-        # rewritten in place for every line, never shorter: blank lines pad it
-        # (opening for writing or truncating took over a millisecond here, as
-        # long as the rest of the line's round trip)
+        # rewritten in place for every line, never shorter: one line of blanks pads
+        # it (opening for writing or truncating took over a millisecond here, as
+        # long as the rest of the line's round trip; a newline per padding byte
+        # made SIMH's DO read thousands of empty lines after every long line)
         self._feed_fd = os.open(self._feed, os.O_RDWR | os.O_CREAT, 0o600)
         self._feed_size = 0
         ini = Path(self._tmp.name) / "boot.ini"
@@ -221,7 +222,7 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         head = self._ring_head()
         feed = ("\n".join(feed_commands(self.sym, text, head)) + "\n").encode()
         self._feed_size = max(self._feed_size, len(feed))
-        os.pwrite(self._feed_fd, feed.ljust(self._feed_size, b"\n"), 0)
+        os.pwrite(self._feed_fd, feed.ljust(self._feed_size - 1).ljust(self._feed_size, b"\n"), 0)
         limit = self.line_limit if limit is None else limit
         answer = self._run_for(limit, text, before=f"do {self._feed}\r", extra_prompts=1)
         if not answer.stopped:   # back at QUERY: ACCEPT took the line and its CR
