@@ -35,11 +35,13 @@ import pexpect
 from harness.machine import pty_child
 from harness.machine.build import KERNEL, KERNEL_MAP, MACHINE_INI, PDP11, ROOT
 from harness.machine.kernel_layout import KernelMapError, read_kernel_map
+from harness.machine.ring_image import ring_image
 from harness.machine.simh import examined
 
 KERNEL_SYMBOLS = ("AWAIT-LINE", "RXHEAD", "RXTAIL", "RING", "RING-MASK", "TIB-SIZE")
 
 PROMPT = "sim> "
+END_WAIT = "deposit cpu wait 0"     # as the receive interrupt ends the WAIT in KEY
 # WAIT (the kernel's KEY with an empty ring, e.g. during #wait) skips straight to
 # the next event instead of counting one instruction time per host loop: the same
 # simulated time and instruction counts, far less host work. SIMH's own switch (a
@@ -85,7 +87,7 @@ def feed_commands(sym, text, head):
     feed = [f"deposit -b {ring + ((head + i) & mask):o} {ord(c):o}"
             for i, c in enumerate(text + "\r")]
     return feed + [f"deposit {sym['RXHEAD']:o} {(head + len(text) + 1) & mask:o}",
-                   "deposit cpu wait 0"]
+                   END_WAIT]
 
 
 FORTH_ERROR = re.compile(r"\r\nError: ([^\r\n]*)")
@@ -113,12 +115,12 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         self.cue = self.sym["AWAIT-LINE"] + 4    # after its TST @#177560: at QUERY
         self.line_limit = line_limit
         self._tmp = tempfile.TemporaryDirectory(prefix="scripted-machine-")
-        self._feed = Path(self._tmp.name) / "feed.ini"
-        # rewritten in place for every line, never shorter: blank lines pad it
-        # (opening for writing or truncating took over a millisecond here, as
-        # long as the rest of the line's round trip)
+        # each line's LOAD image (ring_image.py), rewritten in place: LOAD reads up to
+        # the image's end block, so what a longer line left after it is never read
+        # (opening for writing or truncating took over a millisecond here, as long
+        # as the rest of the line's round trip)
+        self._feed = Path(self._tmp.name) / "line.lda"
         self._feed_fd = os.open(self._feed, os.O_RDWR | os.O_CREAT, 0o600)
-        self._feed_size = 0
         ini = Path(self._tmp.name) / "boot.ini"
         ini.write_text(f"do {MACHINE_INI}\n"
                        f"{SKIP_WAITS}\n"
@@ -219,11 +221,11 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         if any(not (32 <= ord(c) < 127 or c == "\t") for c in text):
             raise ScriptError("line holds a control or non-ASCII character")
         head = self._ring_head()
-        feed = ("\n".join(feed_commands(self.sym, text, head)) + "\n").encode()
-        self._feed_size = max(self._feed_size, len(feed))
-        os.pwrite(self._feed_fd, feed.ljust(self._feed_size, b"\n"), 0)
+        os.pwrite(self._feed_fd, ring_image(self.sym, text, head), 0)
         limit = self.line_limit if limit is None else limit
-        answer = self._run_for(limit, text, before=f"do {self._feed}\r", extra_prompts=1)
+        # the ring and RXHEAD as feed_commands' deposits leave them, and the end of WAIT
+        answer = self._run_for(limit, text, before=f"load {self._feed}\r{END_WAIT}\r",
+                               extra_prompts=2)
         if not answer.stopped:   # back at QUERY: ACCEPT took the line and its CR
             self._head = (head + len(text) + 1) & self.sym["RING-MASK"]
         return self._limited(answer, limit)

@@ -60,6 +60,16 @@ def simh_disassembly(m, spans):
     return found
 
 
+@pytest.fixture
+def forth():
+    """The kernel alone on a blank disk, for the one test here that needs it and
+    closed after it: tests/forth/conftest.py's, module-scoped, would stay booted
+    beside the disassembly tests, idling at 100 times the 11/23's pace (about a
+    sixth of a host core, harness/machine/machine.py) for nothing."""
+    with Machine() as m:
+        yield m
+
+
 @pytest.fixture(scope="module")
 def robot():
     """The robot's disk: 1000 LOAD (the servo), then the disassembler."""

@@ -2,7 +2,8 @@
 emulated robot with the printed servo: they load after 1000 LOAD, the Python
 model chooses the FORTH's action at each of the first 200 steps and ends
 with its weights, the weights survive leaving the FORTH, misuse is refused
-with a message, and python -m harness listing lists the blocks.
+with a message, and python -m harness listing lists the blocks. The model's
+test and the weights' read one run of the trials (conftest's `learned`).
 (test_asn_script.py: the same script gives the same trials.csv; make
 asn-runs checks all of a 50-trial run, and the learning itself.)"""
 import subprocess
@@ -10,8 +11,7 @@ import sys
 
 from harness.analysis import asn_log, asn_model
 from harness.machine.robot import Robot
-
-MODEL_STEPS = 200
+from tests.learning.conftest import MODEL_STEPS
 
 
 def test_blocks_load_after_the_appendix(disk):
@@ -22,11 +22,8 @@ def test_blocks_load_after_the_appendix(disk):
         assert r.send("0 Trials -3 Trials") == ""     # nothing to do, at once
 
 
-def test_model_chooses_the_same_actions_for_200_steps(asn):
-    out = ""
-    while sum(t.n_steps for t in asn_log.parse(out)) < MODEL_STEPS:
-        out += asn.send("Trial") + "\n"
-    trials = asn_log.parse(out)
+def test_model_chooses_the_same_actions_for_200_steps(learned):
+    trials = asn_log.parse(learned.trials)
     net = asn_model.Asn(asn_model.Params.from_blocks())
     forth = asn_log.actions_of(trials)
     compared = [(a, forth[k - 1][n]) for k, n, _, _, a in
@@ -34,17 +31,16 @@ def test_model_chooses_the_same_actions_for_200_steps(asn):
     assert len(compared) >= MODEL_STEPS
     assert [m for m, _ in compared[:MODEL_STEPS]] == [f for _, f in compared[:MODEL_STEPS]]
     assert [m for m, _ in compared] == [f for _, f in compared]
-    done, seed, weights = asn_log.parse_net(asn.send(".Net"))
+    done, seed, weights = asn_log.parse_net(learned.net)
     assert (done, seed, weights) == (len(trials), net.seed, net.weights)
     assert any(any(row) for row in weights)                # it learned something
 
 
-def test_weights_survive_leaving_the_forth(disk):
-    with Robot(disk=disk, timeout=600) as r:
-        r.send("1000 LOAD 1070 LOAD Set.Up.Robot")
-        r.send("Trial")
-        before = asn_log.parse_net(r.send(".Net"))
-    assert before[0] == 1 and any(any(row) for row in before[2])
+def test_weights_survive_leaving_the_forth(learned):
+    """The trials' FORTH has left (`learned`); a new boot on its disk LOADs the net."""
+    disk = learned.disk
+    before = asn_log.parse_net(learned.net)
+    assert before[0] == len(asn_log.parse(learned.trials)) and any(any(row) for row in before[2])
     with open(disk, "rb") as f:                               # block 1079: text, LOADable
         f.seek(1079 * 1024)
         text = f.read(1024).decode("ascii")
