@@ -1,7 +1,12 @@
-"""The LAB device's live stream (pdp11-devices/lab/lab.c), parsed as it arrives (pure
-logic). Tagged rows: W (watched words at a tick), P (the plant: one axis, the
-plant trace's columns), A (watched addresses), S (state), M (memory dump),
-E (a refused command).
+"""The LAB device's live stream (pdp11-devices/lab/lab.c), parsed (pure logic).
+Tagged rows: W (watched words at a tick), P (the plant: one axis, the plant
+trace's columns), A (watched addresses), S (state), M (memory dump), E (a
+refused command), R and I (the front panel: front_panel.py).
+
+P rows are most of the stream (four a tick, one per axis: 9 600 a wall second
+at x10) and only a page draws them, so the server keeps them as the bytes they
+came as and decodes them here, a frame's worth at a time, only when a frame
+goes to a page (plant_rows).
 """
 from dataclasses import dataclass
 
@@ -20,17 +25,34 @@ class Lines:
         return lines
 
 
-def plant_row(row):
-    """A P row (the plant's row, plant_rows.COLUMNS) -> its numbers in that order,
-    the axis as its index in AXES; columns after these are ignored, so the row
-    may grow. None when unreadable."""
-    if len(row.fields) < len(COLUMNS):
+AXIS_INDEX = {letter.encode(): i for i, letter in enumerate(AXES)}
+
+
+def plant_numbers(fields):
+    """A P row's fields as bytes (the plant's row, plant_rows.COLUMNS) -> its numbers
+    in that order, the axis as its index in AXES; columns after these are ignored,
+    so the row may grow. None when unreadable (the axis not one of AXES' letters, a
+    number float() does not read, fewer columns)."""
+    if len(fields) < len(COLUMNS):
+        return None
+    axis = AXIS_INDEX.get(fields[AXIS])
+    if axis is None:
         return None
     try:
-        return [AXES.index(text) if k == AXIS else float(text)
-                for k, text in enumerate(row.fields[:len(COLUMNS)])]
+        return [*map(float, fields[:AXIS]), axis, *map(float, fields[AXIS + 1:len(COLUMNS)])]
     except ValueError:
         return None
+
+
+def plant_rows(lines):
+    """Whole P lines as the device wrote them (bytes, "P," first) -> the numbers of
+    the readable ones, in order."""
+    rows = []
+    for line in lines:
+        numbers = plant_numbers(line.split(b",")[1:])
+        if numbers:
+            rows.append(numbers)
+    return rows
 
 
 @dataclass
