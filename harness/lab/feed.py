@@ -3,26 +3,46 @@ Tagged rows: W (watched words at a tick), P (the plant: one axis, the plant
 trace's columns), A (watched addresses), S (state), M (memory dump), E (a
 refused command), R and I (the front panel: front_panel.py).
 
-P rows are most of the stream (four a tick, one per axis: 9 600 a wall second
-at x10) and only a page draws them, so the server keeps them as the bytes they
-came as and decodes them here, a frame's worth at a time, only when a frame
-goes to a page (plant_rows).
+P rows are most of the stream (four a tick per axis: 9 600 a wall second at
+x10, of some 11 000 lines) and only a page draws them, so the server keeps the
+stream as the bytes it came as, picks the other rows out of it with one regular
+expression (other_lines), and finds and decodes the P rows, a frame's worth at
+a time, only when a frame goes to a page (plant_lines, plant_rows).
 """
+import re
 from dataclasses import dataclass
 
 from harness.machine.plant_rows import AXES, AXIS, COLUMNS
 
 
 class Lines:
-    """Bytes in, whole lines out; a partial last line waits for the rest."""
+    """Bytes in, whole lines out (as one block, each line ending in a newline); a
+    partial last line waits for the rest."""
 
     def __init__(self):
         self.rest = b""
 
     def feed(self, data):
-        lines = (self.rest + data).split(b"\n")
-        self.rest = lines.pop()
-        return lines
+        data = self.rest + data
+        cut = data.rfind(b"\n") + 1
+        self.rest = data[cut:]
+        return data[:cut]
+
+
+# after a newline (a block gets one in front), so that the search skips from one
+# newline to the next instead of trying every byte
+OTHER_LINE = re.compile(rb"\n((?!P,)[^\n]+)")
+PLANT_LINE = re.compile(rb"\n(P,[^\n]*)")
+
+
+def other_lines(block):
+    """The lines of a block of whole lines that are not P rows (empty ones left out)."""
+    return OTHER_LINE.findall(b"\n" + block)
+
+
+def plant_lines(blocks):
+    """The P rows' lines of blocks of whole lines, in order."""
+    return PLANT_LINE.findall(b"\n" + b"".join(blocks))
 
 
 AXIS_INDEX = {letter.encode(): i for i, letter in enumerate(AXES)}

@@ -19,7 +19,7 @@ from pathlib import Path
 from aiohttp import WSMsgType, web
 
 from harness.lab import breakpoints, guard, lesson_checks, protocol, shell_terminal
-from harness.lab.feed import lab_row, plant_rows, thin, words_of
+from harness.lab.feed import lab_row, other_lines, plant_lines, plant_rows, thin, words_of
 from harness.lab.front_panel import PANEL_WORDS, WordIndex
 from harness.lab.panel_feed import PanelFeed
 from harness.lab.program_pane import LatestQuestion, ProgramPane
@@ -77,7 +77,7 @@ class Lab:
         self.opened = 0
         self.holder = None               # who holds the keyboard: a websocket, SHELL, None
         self.scrollback = bytearray()
-        self.plant = []                  # P lines (bytes), decoded for a frame (feed.py)
+        self.plant = []                  # the device's lines as read, P rows decoded for a frame
         self.status = {"time": 0.0, "tick": 0, "state": "run", "speed": speed, "power": "off",
                        "waiting": 0}
         self.servo = {}
@@ -166,23 +166,20 @@ class Lab:
         del self.scrollback[:-SCROLLBACK]
         self.broadcast({"t": "con", "d": data.decode("latin-1")})
 
-    def on_lab(self, lines):
-        """The LAB device's whole lines, as read. P, R and I rows, most of the stream,
-        are kept as they came and decoded when a frame goes to a page (frames); the
-        others act at once."""
-        for line in lines:
-            kind = line.partition(b",")[0]
-            if kind == b"P":
-                self.plant.append(line)
-            elif kind in FRONT_PANEL_ROWS:
+    def on_lab(self, block):
+        """The LAB device's whole lines, as read (bytes). P, R and I rows, most of the
+        stream, are kept as they came and decoded when a frame goes to a page
+        (frames); the others act at once."""
+        self.plant.append(block)
+        for line in other_lines(block):
+            if line.partition(b",")[0] in FRONT_PANEL_ROWS:
                 self.front.add(line)
             else:
                 row = lab_row(line)
-                if row:
-                    self.on_row(row)
-        del self.plant[:-20 * ROWS_PER_FRAME]         # a page that cannot keep up skips
+                if row:                              # not ",..."
+                    self.device_row(row)
 
-    def on_row(self, row):
+    def device_row(self, row):
         if row.kind == "W":
             self.status["time"], self.status["tick"], words = words_of(row)
             self.servo = self.watch.values(words)
@@ -307,7 +304,8 @@ class Lab:
             self.status["prompt"] = self.sim.watcher.at_simh     # SIMH's sim>: stopped
             if not self.pages:
                 continue                 # nobody looks: nothing is decoded (docs/lab.md, cost)
-            rows, panel = thin(plant_rows(plant), ROWS_PER_FRAME), self.front.panel()
+            lines = plant_lines(plant)[-20 * ROWS_PER_FRAME:]   # a page that cannot keep up skips
+            rows, panel = thin(plant_rows(lines), ROWS_PER_FRAME), self.front.panel()
             state = json.dumps([self.status, self.servo, panel])
             if news(rows + ticks, state, self.sent):
                 self.broadcast({"t": "data", "rows": rows, "status": self.status,

@@ -76,8 +76,8 @@ def boot_script(disk, lab_fifo, speed, kernel=KERNEL, read_only=False):
 
 class Simulator:
     """One lab machine. Callbacks (called on the loop): console(bytes), lab(the
-    LAB device's whole lines as read, bytes: feed.py decodes them), ended(safe:
-    bool, or None when the simulator exited by itself)."""
+    LAB device's whole lines as read, one bytes block: feed.py decodes them),
+    ended(safe: bool, or None when the simulator exited by itself)."""
 
     def __init__(self, simulator, disk, console, lab, ended, speed="real", page=None,
                  read_only=False):
