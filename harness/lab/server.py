@@ -182,8 +182,10 @@ class Lab:
     def device_row(self, row):
         if row.kind == "W":
             self.status["time"], self.status["tick"], words = words_of(row)
-            self.servo = self.watch.values(words)
-            self.ticks.add(self.status["time"], self.servo)
+            servo = self.watch.values(words)
+            if servo is not self.servo:          # else the same words: no change to keep
+                self.servo = servo
+                self.ticks.add(self.status["time"], servo)
             hint = self.rack_hint.update(self.status["power"], self.status["time"], self.servo)
             if hint:
                 self.on_console(f"\r\n{hint}\r\n".encode())
