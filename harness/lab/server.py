@@ -241,7 +241,13 @@ class Lab:
         if self.sending:
             await asyncio.wait(set(self.sending), timeout=timeout)
 
+    def refresh_status(self):
+        """The status's parts the device's rows do not bring."""
+        self.status["waiting"] = self.sim.waiting()
+        self.status["prompt"] = self.sim.watcher.at_simh     # SIMH's sim>: stopped
+
     def hello(self, ws):
+        self.refresh_status()
         return {"t": "hello", "stops": self.sim.stops, "plant": self.sim.plant.message(),
                 "per_axis": PER_AXIS, "single": SINGLE, "status": self.status,
                 "con": self.scrollback.decode("latin-1"), "keyboard": self.keyboard(ws)}
@@ -302,10 +308,9 @@ class Lab:
             await asyncio.sleep(frame_interval(self.status["speed"]))
             plant, self.plant = self.plant, []
             ticks = self.ticks.take(TICKS_PER_FRAME)
-            self.status["waiting"] = self.sim.waiting()
-            self.status["prompt"] = self.sim.watcher.at_simh     # SIMH's sim>: stopped
             if not self.pages:
                 continue                 # nobody looks: nothing is decoded (docs/lab.md, cost)
+            self.refresh_status()
             lines = plant_lines(plant)[-20 * ROWS_PER_FRAME:]   # a page that cannot keep up skips
             rows, panel = thin(plant_rows(lines), ROWS_PER_FRAME), self.front.panel()
             state = json.dumps([self.status, self.servo, panel])
