@@ -4,10 +4,10 @@ trace's columns), A (watched addresses), S (state), M (memory dump), E (a
 refused command), R and I (the front panel: front_panel.py).
 
 P rows are most of the stream (four a tick per axis: 9 600 a wall second at
-x10, of some 11 000 lines) and only a page draws them, so the server keeps the
-stream as the bytes it came as, picks the other rows out of it with one regular
-expression (other_lines), and finds and decodes the P rows, a frame's worth at
-a time, only when a frame goes to a page (plant_lines, plant_rows).
+x10, of some 11 000 lines) and only a page draws them, so the server picks the
+other rows out of each block it reads with one regular expression
+(other_lines), and finds and decodes the P rows only while a page is connected
+(plant_lines, plant_rows).
 """
 import re
 from dataclasses import dataclass
@@ -40,9 +40,9 @@ def other_lines(block):
     return OTHER_LINE.findall(b"\n" + block)
 
 
-def plant_lines(blocks):
-    """The P rows' lines of blocks of whole lines, in order."""
-    return PLANT_LINE.findall(b"\n" + b"".join(blocks))
+def plant_lines(block):
+    """The P rows' lines of a block of whole lines, in order."""
+    return PLANT_LINE.findall(b"\n" + block)
 
 
 AXIS_INDEX = {letter.encode(): i for i, letter in enumerate(AXES)}

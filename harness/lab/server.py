@@ -77,7 +77,7 @@ class Lab:
         self.opened = 0
         self.holder = None               # who holds the keyboard: a websocket, SHELL, None
         self.scrollback = bytearray()
-        self.plant = []                  # the device's lines as read, P rows decoded for a frame
+        self.rows = []                   # plant rows decoded for the next frame (feed.py)
         self.status = {"time": 0.0, "tick": 0, "state": "run", "speed": speed, "power": "off",
                        "waiting": 0}
         self.servo = {}
@@ -168,9 +168,12 @@ class Lab:
 
     def on_lab(self, block):
         """The LAB device's whole lines, as read (bytes). P, R and I rows, most of the
-        stream, are kept as they came and decoded when a frame goes to a page
-        (frames); the others act at once."""
-        self.plant.append(block)
+        stream, are decoded only for a page: P rows as they come while one is
+        connected, R and I rows when a frame goes out (panel_feed.py); the others
+        act at once."""
+        if self.pages:
+            self.rows += plant_rows(plant_lines(block))
+            del self.rows[:-20 * ROWS_PER_FRAME]     # a page that cannot keep up skips
         for line in other_lines(block):
             if line.partition(b",")[0] in FRONT_PANEL_ROWS:
                 self.front.add(line)
@@ -306,13 +309,12 @@ class Lab:
     async def frames(self):
         while not self.done.is_set():
             await asyncio.sleep(frame_interval(self.status["speed"]))
-            plant, self.plant = self.plant, []
+            rows, self.rows = thin(self.rows, ROWS_PER_FRAME), []
             ticks = self.ticks.take(TICKS_PER_FRAME)
             if not self.pages:
                 continue                 # nobody looks: nothing is decoded (docs/lab.md, cost)
             self.refresh_status()
-            lines = plant_lines(plant)[-20 * ROWS_PER_FRAME:]   # a page that cannot keep up skips
-            rows, panel = thin(plant_rows(lines), ROWS_PER_FRAME), self.front.panel()
+            panel = self.front.panel()
             state = json.dumps([self.status, self.servo, panel])
             if news(rows + ticks, state, self.sent):
                 self.broadcast({"t": "data", "rows": rows, "status": self.status,

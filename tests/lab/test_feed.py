@@ -16,8 +16,8 @@ def test_lines_keep_a_partial_line_for_the_next_read():
 def test_p_rows_and_the_others_are_told_apart_in_a_block():
     block = b"W,0.1,6,1\nP,0.1,X,1\nP\nPX,1\n\nR,0.1,7\nP,0.1,Y,2\nI,0.1,100=6\n"
     assert other_lines(block) == [b"W,0.1,6,1", b"P", b"PX,1", b"R,0.1,7", b"I,0.1,100=6"]
-    assert plant_lines([block, b"P,0.2,Z,3\n"]) == [b"P,0.1,X,1", b"P,0.1,Y,2", b"P,0.2,Z,3"]
-    assert other_lines(b"") == [] and plant_lines([]) == []
+    assert plant_lines(block + b"P,0.2,Z,3\n") == [b"P,0.1,X,1", b"P,0.1,Y,2", b"P,0.2,Z,3"]
+    assert other_lines(b"") == [] and plant_lines(b"") == []
 
 
 def test_plant_rows_in_the_trace_columns_and_extra_columns_are_ignored():
