@@ -1,36 +1,78 @@
-"""The LAB device's live stream (pdp11-devices/lab/lab.c), parsed as it arrives (pure
-logic). Tagged rows: W (watched words at a tick), P (the plant: one axis, the
-plant trace's columns), A (watched addresses), S (state), M (memory dump),
-E (a refused command).
+"""The LAB device's live stream (pdp11-devices/lab/lab.c), parsed (pure logic).
+Tagged rows: W (watched words at a tick), P (the plant: one axis, the plant
+trace's columns), A (watched addresses), S (state), M (memory dump), E (a
+refused command), R and I (the front panel: front_panel.py).
+
+P rows are most of the stream (four a tick per axis: 9 600 a wall second at
+x10, of some 11 000 lines) and only a page draws them, so the server picks the
+other rows out of each block it reads with one regular expression
+(other_lines), and finds and decodes the P rows only while a page is connected
+(plant_lines, plant_rows).
 """
+import re
 from dataclasses import dataclass
 
 from harness.machine.plant_rows import AXES, AXIS, COLUMNS
 
 
 class Lines:
-    """Bytes in, whole lines out; a partial last line waits for the rest."""
+    """Bytes in, whole lines out (as one block, each line ending in a newline); a
+    partial last line waits for the rest."""
 
     def __init__(self):
         self.rest = b""
 
     def feed(self, data):
-        lines = (self.rest + data).split(b"\n")
-        self.rest = lines.pop()
-        return lines
+        data = self.rest + data
+        cut = data.rfind(b"\n") + 1
+        self.rest = data[cut:]
+        return data[:cut]
 
 
-def plant_row(row):
-    """A P row (the plant's row, plant_rows.COLUMNS) -> its numbers in that order,
-    the axis as its index in AXES; columns after these are ignored, so the row
-    may grow. None when unreadable."""
-    if len(row.fields) < len(COLUMNS):
+# after a newline (a block gets one in front), so that the search skips from one
+# newline to the next instead of trying every byte
+OTHER_LINE = re.compile(rb"\n((?!P,)[^\n]+)")
+PLANT_LINE = re.compile(rb"\n(P,[^\n]*)")
+
+
+def other_lines(block):
+    """The lines of a block of whole lines that are not P rows (empty ones left out)."""
+    return OTHER_LINE.findall(b"\n" + block)
+
+
+def plant_lines(block):
+    """The P rows' lines of a block of whole lines, in order."""
+    return PLANT_LINE.findall(b"\n" + block)
+
+
+AXIS_INDEX = {letter.encode(): i for i, letter in enumerate(AXES)}
+
+
+def plant_numbers(fields):
+    """A P row's fields as bytes (the plant's row, plant_rows.COLUMNS) -> its numbers
+    in that order, the axis as its index in AXES; columns after these are ignored,
+    so the row may grow. None when unreadable (the axis not one of AXES' letters, a
+    number float() does not read, fewer columns)."""
+    if len(fields) < len(COLUMNS):
+        return None
+    axis = AXIS_INDEX.get(fields[AXIS])
+    if axis is None:
         return None
     try:
-        return [AXES.index(text) if k == AXIS else float(text)
-                for k, text in enumerate(row.fields[:len(COLUMNS)])]
+        return [*map(float, fields[:AXIS]), axis, *map(float, fields[AXIS + 1:len(COLUMNS)])]
     except ValueError:
         return None
+
+
+def plant_rows(lines):
+    """Whole P lines as the device wrote them (bytes, "P," first) -> the numbers of
+    the readable ones, in order."""
+    rows = []
+    for line in lines:
+        numbers = plant_numbers(line.split(b",")[1:])
+        if numbers:
+            rows.append(numbers)
+    return rows
 
 
 @dataclass

@@ -69,14 +69,21 @@ class WordIndex:
         return self.by_address[self._sorted[i]] if i >= 0 else None
 
 
-def panel(fields, index):
-    """A panel for the page from an R row's fields, or None when unreadable."""
+def panel_numbers(fields):
+    """An R row's fields -> (time, [numbers]), or None when unreadable."""
     try:
         time, numbers = float(fields[0]), [int(f, 8) for f in fields[1:]]
     except (ValueError, IndexError):
         return None
-    if len(numbers) < 17:
+    return (time, numbers) if len(numbers) >= 17 else None
+
+
+def panel(fields, index):
+    """A panel for the page from an R row's fields, or None when unreadable."""
+    read = panel_numbers(fields)
+    if read is None:
         return None
+    time, numbers = read
     regs, psw, at_ip = numbers[:8], numbers[8], numbers[9]
     lks, csr, outbuf = numbers[10:13]
     dacs, extra = numbers[13:17], numbers[17:]
@@ -127,12 +134,17 @@ class InterruptRates:
         self.samples = deque()
 
     def add(self, time, counts):
-        """The panel's list: [{vector, device, per_s, total}], known vectors first."""
+        """A sample: the counts at simulated `time`."""
         if self.samples and time < self.samples[-1][0]:
             self.samples.clear()             # a new machine (or a reset): start again
         self.samples.append((time, counts))
         while len(self.samples) > 2 and self.samples[1][0] <= time - RATE_WINDOW_S:
             self.samples.popleft()
+
+    def rates(self):
+        """The panel's list at the newest sample: [{vector, device, per_s, total}],
+        known vectors first."""
+        time, counts = self.samples[-1]
         then, before = self.samples[0]
         span = time - then
         vectors = list(VECTORS) + sorted(set(counts) - set(VECTORS))

@@ -16,12 +16,12 @@ import signal
 import sys
 from pathlib import Path
 
-from aiohttp import WSMsgType, web
+from harness.lab.aiohttp_import import WSMsgType, web
 
 from harness.lab import breakpoints, guard, lesson_checks, protocol, shell_terminal
-from harness.lab.feed import plant_row, thin, words_of
-from harness.lab.front_panel import PANEL_WORDS, InterruptRates, WordIndex, \
-    interrupt_counts, panel
+from harness.lab.feed import lab_row, other_lines, plant_lines, plant_rows, thin, words_of
+from harness.lab.front_panel import PANEL_WORDS, WordIndex
+from harness.lab.panel_feed import PanelFeed
 from harness.lab.program_pane import LatestQuestion, ProgramPane
 from harness.lab.rack_hint import RackHint
 from harness.lab.servo_watch import PER_AXIS, SINGLE, ServoWatch
@@ -46,6 +46,7 @@ FULL_SPEED_FRAME_S = 1 / 10      # at full speed: snapshots anyway, and Chromium
 PROBE_S = 1.0                    # how often the dictionary's heads are looked at
 DICTIONARY_WAIT_S = 2.0          # a breakpoint's word not known: at most this for a probe
 ROWS_PER_FRAME = 400             # more than this (fast runs) are thinned per axis
+FRONT_PANEL_ROWS = (b"R", b"I")  # the LAB device's rows panel_feed.py decodes
 TICKS_PER_FRAME = 100            # changes of the watched words per frame (word_history.py)
 SCROLLBACK = 1 << 17
 SHELL = "the shell"
@@ -70,14 +71,13 @@ class Lab:
         self.words = WordIndex({address: name for name, address in symbols.items()})
         self.panel_command = "panel " + " ".join(f"{symbols[name] + BODY:o}"
                                                  for name in PANEL_WORDS)
-        self.panel = None                # the 11/23's front panel (front_panel.py)
-        self.interrupts = InterruptRates()   # per vector, per simulated second
+        self.front = PanelFeed(self.words)   # the 11/23's front panel (front_panel.py)
         self._console_tail = b""
         self.pages = {}                  # websocket -> its name ("page 3")
         self.opened = 0
         self.holder = None               # who holds the keyboard: a websocket, SHELL, None
         self.scrollback = bytearray()
-        self.rows = []
+        self.rows = []                   # plant rows decoded for the next frame (feed.py)
         self.status = {"time": 0.0, "tick": 0, "state": "run", "speed": speed, "power": "off",
                        "waiting": 0}
         self.servo = {}
@@ -166,16 +166,29 @@ class Lab:
         del self.scrollback[:-SCROLLBACK]
         self.broadcast({"t": "con", "d": data.decode("latin-1")})
 
-    def on_lab(self, row):
-        if row.kind == "P":
-            sample = plant_row(row)
-            if sample:
-                self.rows.append(sample)
-                del self.rows[:-20 * ROWS_PER_FRAME]   # a page that cannot keep up skips
-        elif row.kind == "W":
+    def on_lab(self, block):
+        """The LAB device's whole lines, as read (bytes). P, R and I rows, most of the
+        stream, are decoded only for a page: P rows as they come while one is
+        connected, R and I rows when a frame goes out (panel_feed.py); the others
+        act at once."""
+        if self.pages:
+            self.rows += plant_rows(plant_lines(block))
+            del self.rows[:-20 * ROWS_PER_FRAME]     # a page that cannot keep up skips
+        for line in other_lines(block):
+            if line.partition(b",")[0] in FRONT_PANEL_ROWS:
+                self.front.add(line)
+            else:
+                row = lab_row(line)
+                if row:                              # not ",..."
+                    self.device_row(row)
+
+    def device_row(self, row):
+        if row.kind == "W":
             self.status["time"], self.status["tick"], words = words_of(row)
-            self.servo = self.watch.values(words)
-            self.ticks.add(self.status["time"], self.servo)
+            servo = self.watch.values(words)
+            if servo is not self.servo:          # else the same words: no change to keep
+                self.servo = servo
+                self.ticks.add(self.status["time"], servo)
             hint = self.rack_hint.update(self.status["power"], self.status["time"], self.servo)
             if hint:
                 self.on_console(f"\r\n{hint}\r\n".encode())
@@ -189,12 +202,6 @@ class Lab:
             self.words.learn(self.watch.memory, self.watch.vocabulary)   # a fresh dictionary
             if self.watch.settled():
                 self.dictionary_read.set()
-        elif row.kind == "R":
-            self.panel = panel(row.fields, self.words)
-        elif row.kind == "I":
-            counts = interrupt_counts(row.fields)
-            if self.panel and counts:
-                self.panel["interrupts"] = self.interrupts.add(*counts)
         elif row.kind == "S":
             self.status["time"] = float(row.fields[0])
             self.status["state"] = row.fields[1]
@@ -237,7 +244,13 @@ class Lab:
         if self.sending:
             await asyncio.wait(set(self.sending), timeout=timeout)
 
+    def refresh_status(self):
+        """The status's parts the device's rows do not bring."""
+        self.status["waiting"] = self.sim.waiting()
+        self.status["prompt"] = self.sim.watcher.at_simh     # SIMH's sim>: stopped
+
     def hello(self, ws):
+        self.refresh_status()
         return {"t": "hello", "stops": self.sim.stops, "plant": self.sim.plant.message(),
                 "per_axis": PER_AXIS, "single": SINGLE, "status": self.status,
                 "con": self.scrollback.decode("latin-1"), "keyboard": self.keyboard(ws)}
@@ -298,12 +311,14 @@ class Lab:
             await asyncio.sleep(frame_interval(self.status["speed"]))
             rows, self.rows = thin(self.rows, ROWS_PER_FRAME), []
             ticks = self.ticks.take(TICKS_PER_FRAME)
-            self.status["waiting"] = self.sim.waiting()
-            self.status["prompt"] = self.sim.watcher.at_simh     # SIMH's sim>: stopped
-            state = json.dumps([self.status, self.servo, self.panel])
-            if self.pages and news(rows + ticks, state, self.sent):
+            if not self.pages:
+                continue                 # nobody looks: nothing is decoded (docs/lab.md, cost)
+            self.refresh_status()
+            panel = self.front.panel()
+            state = json.dumps([self.status, self.servo, panel])
+            if news(rows + ticks, state, self.sent):
                 self.broadcast({"t": "data", "rows": rows, "status": self.status,
-                                "servo": self.servo, "panel": self.panel, "ticks": ticks})
+                                "servo": self.servo, "panel": panel, "ticks": ticks})
                 self.sent = state
 
     async def probes(self):

@@ -35,6 +35,7 @@ class ServoWatch:
         self.found = {}
         self.probes = self.answered = 0    # probes asked for; their HERE rows come in order
         self.awaiting = False              # a watch list sent, its A row not yet back
+        self.last = None                   # (words, the table values() made of them)
 
     def probe(self):
         """The commands that read the chain heads and HERE, and the dumped arrays."""
@@ -51,6 +52,7 @@ class ServoWatch:
         """A dump row arrived; the commands it calls for (a dictionary dump, a new
         watch list), in order."""
         self.memory.store(address, words)
+        self.last = None                       # a dumped array may have changed
         last = address + 2 * len(words) - 2
         if address == self.dp and len(words) == 1:
             self.answered += 1                 # a probe's last row (before its arrays)
@@ -95,11 +97,16 @@ class ServoWatch:
         """The device's A row: from now on W rows carry these addresses."""
         wanted, layout = self.pending
         self.layout = layout if addresses == wanted else []
+        self.last = None
         self.awaiting = False
 
     def values(self, words):
         """{name: [x, y, z, t]} or {name: value} from a W row's words (signed);
-        a dumped array, once its dump arrived, as {name: [values]}."""
+        a dumped array, once its dump arrived, as {name: [values]}. The same table
+        (object) again while the words, the layout and the memory stand still, as
+        they do tick after tick while the FORTH waits at its prompt."""
+        if self.last is not None and self.last[0] == words:
+            return self.last[1]
         table = {}
         for (name, axis), word in zip(self.layout, words):
             if axis is None:
@@ -111,4 +118,5 @@ class ServoWatch:
                 cells = [self.memory.word(self.found[name] + 2 * i) for i in range(n)]
                 if None not in cells:
                     table[name] = [signed(w) for w in cells]
+        self.last = (words, table)
         return table

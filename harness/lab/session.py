@@ -22,7 +22,7 @@ from pathlib import Path
 
 import pexpect
 
-from harness.lab.feed import Lines, lab_row
+from harness.lab.feed import Lines
 from harness.lab.sim_prompt_guard import SimPromptGuard, prompt_termios
 from harness.lab.protocol import device_command
 from harness.machine import plant_rows, pty_child, simh
@@ -35,6 +35,8 @@ from harness.machine.simh_command import RUNS, simh_command
 
 SPEEDS = {"real": 1, "x10": 10, "full": 0}
 READ_CHUNK = 1 << 16
+LAB_READ_PAUSE_S = 0.02      # the LAB FIFO: at most ~50 reads a second, not one per tick
+                             # (600 at x10); its pipe holds 64 KB, 90 ms of rows at x10
 QUEUE_LIMIT = 1 << 16        # characters waiting for the simulator; the pages send within it
 PUMP_S = 0.005               # how often waiting keys are offered to the pty
 EXIT_WAIT_S = 0.1            # for a simulator that has quit, before its pty is closed
@@ -73,8 +75,9 @@ def boot_script(disk, lab_fifo, speed, kernel=KERNEL, read_only=False):
 
 
 class Simulator:
-    """One lab machine. Callbacks (called on the loop): console(bytes),
-    lab(LabRow), ended(safe: bool, or None when the simulator exited by itself)."""
+    """One lab machine. Callbacks (called on the loop): console(bytes), lab(the
+    LAB device's whole lines as read, one bytes block: feed.py decodes them),
+    ended(safe: bool, or None when the simulator exited by itself)."""
 
     def __init__(self, simulator, disk, console, lab, ended, speed="real", page=None,
                  read_only=False):
@@ -121,14 +124,7 @@ class Simulator:
         self.pumping = loop.create_task(self._pump())
         lab_lines = Lines()
         console, lab, _ = self.callbacks
-
-        def read_lab(data):
-            for line in lab_lines.feed(data):
-                row = lab_row(line)
-                if row:
-                    lab(row)
-
-        self._watch(loop, "lab", read_lab)
+        self._watch(loop, "lab", lambda data: lab(lab_lines.feed(data)), LAB_READ_PAUSE_S)
         self.fds["pty"] = self.child.child_fd
 
         def read_console(data):
@@ -152,8 +148,15 @@ class Simulator:
                 self.page_keys(b"")               # the page's keys that waited for sim>
         self._watch(loop, "pty", read_console)
 
-    def _watch(self, loop, name, handle):
+    def _watch(self, loop, name, handle, pause=0):
+        """Hand what `name`'s fd gives to `handle`; with `pause`, after a read that
+        did not fill READ_CHUNK, that long without reading: meanwhile the writer's
+        rows gather in the FIFO, and one wake-up takes many."""
         fd = self.fds[name]
+
+        def resume():
+            if self.fds.get(name) == fd:          # not closed meanwhile
+                loop.add_reader(fd, readable)
 
         def readable():
             try:
@@ -171,6 +174,9 @@ class Simulator:
                     self.callbacks[2](self._exited())
                 return
             handle(data)
+            if pause and len(data) < READ_CHUNK and self.fds.get(name) == fd:
+                loop.remove_reader(fd)
+                loop.call_later(pause, resume)
         loop.add_reader(fd, readable)
 
     def _unwatch(self, name):

@@ -111,7 +111,16 @@ def test_the_asn_words_are_watched_and_its_weights_dumped_with_each_probe():
     assert watch.probe()[-1] == f"dump {weights:o} 72"     # 72 words: more than a watch holds
     watch.on_addresses([trial, steps])
     watch.on_memory(weights, [0o177776] + [5] * 71)
-    assert watch.values([3, 12]) == {"Trial.No": 3, "Steps": 12, "Weights": [-2] + [5] * 71}
+    shown = watch.values([3, 12])
+    assert shown == {"Trial.No": 3, "Steps": 12, "Weights": [-2] + [5] * 71}
+    # tick after tick the same words: the same table, not made again ...
+    assert watch.values([3, 12]) is shown
+    # ... until the words, a dumped array or the layout change
+    assert watch.values([4, 12])["Trial.No"] == 4
+    watch.on_memory(weights, [1] * 72)
+    assert watch.values([4, 12])["Weights"] == [1] * 72
+    watch.on_addresses([steps])
+    assert watch.values([4, 12]) == {"Weights": [1] * 72}
 
 
 def test_settled_once_every_probe_is_answered_and_a_changed_dictionary_read():

@@ -57,14 +57,16 @@ def test_the_printed_blocks_place_their_words(tmp_path):
 def test_interrupts_per_second_over_the_last_simulated_second():
     rates = InterruptRates()
     for tick in range(121):                          # two seconds of 60 Hz ticks
-        shown = rates.add(tick / 60, {0o100: tick, 0o60: tick // 30})
+        rates.add(tick / 60, {0o100: tick, 0o60: tick // 30})
+    shown = rates.rates()
     by_vector = {v["vector"]: v for v in shown}
     assert by_vector["100"] == {"vector": "100", "device": "KW11-L", "total": 120, "per_s": 60.0}
     assert by_vector["060"]["per_s"] == 2.0 and by_vector["300"]["per_s"] == 0.0
     assert [v["vector"] for v in shown][:6] == ["060", "064", "100", "160", "300", "304"]
     assert interrupt_counts(["1.5", "100=90", "60=3"]) == (1.5, {0o100: 90, 0o60: 3})
     assert interrupt_counts(["1.5"]) == (1.5, {}) and interrupt_counts(["x", "1"]) is None
-    assert rates.add(0.0, {})[2]["per_s"] is None    # a new machine: no second yet
+    rates.add(0.0, {})
+    assert rates.rates()[2]["per_s"] is None         # a new machine: no second yet
 
 
 def test_listings_go_one_at_a_time_and_a_superseded_question_is_skipped():
