@@ -16,7 +16,7 @@ import signal
 import sys
 from pathlib import Path
 
-from harness.lab.aiohttp_import import WSMsgType, web
+from aiohttp import WSMsgType, web
 
 from harness.lab import breakpoints, guard, lesson_checks, protocol, shell_terminal
 from harness.lab.feed import lab_row, other_lines, plant_lines, plant_rows, thin, words_of
