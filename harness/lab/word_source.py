@@ -53,7 +53,12 @@ def definition(name, blocks, before=(), after=()):
     whose neighbours in the source are the word's neighbours in the dictionary
     (`before`: the names defined just before it, nearest first; `after`: just
     after) is taken; of equals, the last in block order."""
-    found = definitions(blocks)
+    return definition_among(name, definitions(blocks), before, after)
+
+
+def definition_among(name, found, before=(), after=()):
+    """definition() among `found`, what definitions() gave for the blocks: for a
+    caller that looks up many words in the same blocks, which are read once."""
     names = [n for n, _, _ in found]
     best, best_score = None, -1
     for i, (defined, block, line) in enumerate(found):

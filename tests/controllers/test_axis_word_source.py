@@ -6,7 +6,7 @@ apart: each word of each machine's load is placed in its own block."""
 import pytest
 
 from harness.lab.program_pane import written_blocks
-from harness.lab.word_source import definition, definitions
+from harness.lab.word_source import definition_among, definitions
 from harness.machine.build import PRISTINE_DISK
 
 NEIGHBOURS = 3           # as the lab server asks (front_panel.neighbours)
@@ -23,12 +23,14 @@ def blocks():
 
 @pytest.mark.parametrize("load", LOADS)
 def test_each_word_of_a_load_is_placed_in_its_own_blocks(load, blocks):
-    loaded = [d for d in definitions(blocks) if d[1] in LOADS[load]]   # dictionary order
+    found = definitions(blocks)
+    loaded = [d for d in found if d[1] in LOADS[load]]                 # dictionary order
     names = [n for n, _, _ in loaded]
     wrong = []
     for i, (name, block, line) in enumerate(loaded):
         before = names[max(0, i - NEIGHBOURS):i][::-1]
         after = names[i + 1:i + 1 + NEIGHBOURS]
-        if definition(name, blocks, before, after) != (block, line):
-            wrong.append((name, block, definition(name, blocks, before, after)))
+        placed = definition_among(name, found, before, after)
+        if placed != (block, line):
+            wrong.append((name, block, placed))
     assert not wrong, wrong
