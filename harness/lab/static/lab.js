@@ -31,7 +31,7 @@ window.lab = lab;
 
 // ---- the terminal --------------------------------------------------------------------
 const term = new Terminal({
-  fontFamily: '"DejaVu Sans Mono", monospace', fontSize: 17, cursorBlink: true,
+  fontFamily: '"DejaVu Sans Mono", monospace', fontSize: 17, cursorBlink: false,   // lab-cursor.js
   scrollback: 5000, theme: { background: "#000000", foreground: "#e6edf3", cursor: "#f0883e" },
 });
 const fit = new FitAddon.FitAddon();
