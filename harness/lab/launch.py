@@ -73,7 +73,10 @@ def have_browser():
 
 
 def headless_browser(width=1920, height=1080):
-    """Debian's Chromium through its chromium-driver (Selenium downloads nothing)."""
+    """Debian's Chromium through its chromium-driver (Selenium downloads nothing), the
+    page width x height, as a projector shows it full screen. --window-size is the
+    window's: the new headless mode draws a browser's frame inside it (tab strip,
+    toolbar: 143 pixels of 1080 high), so the window is grown by the frame."""
     from selenium import webdriver
     from selenium.webdriver.chrome.service import Service
     options = webdriver.ChromeOptions()
@@ -81,4 +84,8 @@ def headless_browser(width=1920, height=1080):
     for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
                 f"--window-size={width},{height}", "--hide-scrollbars"):
         options.add_argument(arg)
-    return webdriver.Chrome(service=Service(str(CHROMEDRIVER)), options=options)
+    driver = webdriver.Chrome(service=Service(str(CHROMEDRIVER)), options=options)
+    frame = driver.execute_script("return [outerWidth - innerWidth, outerHeight - innerHeight]")
+    if any(frame):
+        driver.set_window_size(width + frame[0], height + frame[1])
+    return driver

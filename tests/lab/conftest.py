@@ -27,7 +27,9 @@ def browser():
         # chromium cannot be installed does this skip, and it says so.
         pytest.skip("browser tests need Debian's chromium and chromium-driver "
                     f"({CHROMIUM}, {CHROMEDRIVER}): `make lab-browser` could not install them")
-    driver = headless_browser()
+    # The smaller projector's size: Chromium rasterises and composites in software, its
+    # work growing with the pixels; the tests of layout look at both sizes (projector()).
+    driver = headless_browser(1280, 720)
     ARTIFACTS.mkdir(parents=True, exist_ok=True)
     yield driver
     driver.quit()

@@ -20,7 +20,9 @@ LAB_SPEED = "x10"
 def page(lab_server, browser):
     browser.get(lab_server.url)
     connected(browser)
-    return browser
+    yield browser
+    browser.get("about:blank")      # the session's browser waits for other modules: blank,
+                                    # not an ended page that still ticks its timers
 
 
 def test_the_terminal_answers(page):

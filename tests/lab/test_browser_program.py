@@ -30,7 +30,8 @@ def page(lab_server, browser):
     browser.execute_script("localStorage.clear()")
     browser.refresh()
     connected(browser)
-    return browser
+    yield browser
+    browser.get("about:blank")      # as test_browser.py's page: nothing left ticking
 
 
 class AnotherPage:

@@ -120,19 +120,18 @@ function zTrail() {                 // z's samples of the last TRAIL_S seconds
 // What the picture shows, or null while it changes with time alone (the trail fades:
 // x, y or z moved in the last TRAIL_S seconds). An unchanged picture is not drawn
 // again: Chromium would redraw and composite the canvas 30 times a second for
-// nothing while the robot stands (docs/lab.md, Cost).
+// nothing while the robot stands (docs/lab.md, Cost). z standing, its trail's marks
+// all lie under z's own bar (drawZ): how many there are does not show.
 function robotShows(w, h) {
-  const since = lab.status.time - TRAIL_S, kept = [];
+  const since = lab.status.time - TRAIL_S;
   for (const axis of [0, 1, 2]) {     // newest first, no copies: this runs every frame
     const trace = lab.traces[axis] || [], last = trace[trace.length - 1];
-    let n = 0;
-    for (let k = trace.length - 1; k >= 0 && trace[k][ROW.time_s] >= since; k--, n++)
+    for (let k = trace.length - 1; k >= 0 && trace[k][ROW.time_s] >= since; k--)
       if (trace[k][ROW.pos] !== last[ROW.pos]) return null;
-    kept.push(n);
   }
   const drawn = lab.latest.map((r) => r && [r[ROW.pos], r[ROW.counter], r[ROW.grip], r[ROW.contact]]);
   return JSON.stringify([w, h, window.devicePixelRatio, drawn, lab.servo["Desire.Pos"], lab.stops,
-                         robotView.targets, Math.ceil(kept[2] / 8)]);   // z's marks pile up
+                         robotView.targets]);
 }
 let robotShown = null;
 

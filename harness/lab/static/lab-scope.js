@@ -300,7 +300,6 @@ function note() {                    // what the page shows against what happene
   return parts.join(" \u00b7 ");
 }
 
-let readoutText = "";
 function drawScope() {               // lab.js's frame loop, when something changed
   if (!scope.plot) rebuildPlot();
   const r = plotBox.getBoundingClientRect();
@@ -322,13 +321,12 @@ function drawScope() {               // lab.js's frame loop, when something chan
       u.setScale("x", { min: start, max: end });   // the time axis to the window
     });
   }
-  const text = `${scope.readout()}\n${note()}`;
-  if (text !== readoutText) {
-    const [line, why] = (readoutText = text).split("\n");
-    const box = document.getElementById("scope-readout");
-    box.textContent = box.title = line;     // the whole line on hover where it is cut
-    document.getElementById("scope-note").textContent = why;
-  }
+  // each written only when it changed (put, lab.js): the note's rate changes with
+  // every frame, the cursors' readout only when they move
+  const line = scope.readout(), box = document.getElementById("scope-readout");
+  put(box, line);
+  putAttribute(box, "title", line);        // the whole line on hover where it is cut
+  put(document.getElementById("scope-note"), note());
 }
 
 // ---- CSV and PNG -------------------------------------------------------------------------

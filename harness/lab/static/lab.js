@@ -31,7 +31,7 @@ window.lab = lab;
 
 // ---- the terminal --------------------------------------------------------------------
 const term = new Terminal({
-  fontFamily: '"DejaVu Sans Mono", monospace', fontSize: 17, cursorBlink: true,
+  fontFamily: '"DejaVu Sans Mono", monospace', fontSize: 17, cursorBlink: false,   // lab-cursor.js
   scrollback: 5000, theme: { background: "#000000", foreground: "#e6edf3", cursor: "#f0883e" },
 });
 const fit = new FitAddon.FitAddon();
@@ -308,9 +308,9 @@ function drawTable() {
 const ASN_WORDS = { "Trial.No": "trials done", "Steps": "steps", "Z.Was": "payoff", "Late": "late moves" };
 let asnText = "", asnWeights = "";
 function drawAsn() {
-  const box = document.getElementById("asn");
-  box.hidden = !("Trial.No" in lab.servo);
-  if (box.hidden) return;
+  const box = document.getElementById("asn"), shown = "Trial.No" in lab.servo;
+  if (box.hidden === shown) box.hidden = !shown;     // as put(): unchanged, not written
+  if (!shown) return;
   const text = "ASN: " + Object.entries(ASN_WORDS).map(([n, label]) => `${label} ${lab.servo[n]}`).join(", ");
   if (text !== asnText) document.getElementById("asn-text").textContent = asnText = text;
   const w = lab.servo.Weights;
