@@ -9,7 +9,6 @@ import threading
 
 import pytest
 from selenium.webdriver.common.by import By
-from selenium.webdriver.support.ui import Select
 
 from harness.analysis.listing import BLOCK_BYTES
 from harness.lab.page_client import Page
@@ -146,6 +145,9 @@ def test_a_lesson_types_its_line_and_an_exercise_runs_its_check(page):
     page.find_elements(By.CSS_SELECTOR, "#teach-body .teach-do")[4].click()
     wait_for("the lesson's line typed", lambda: js(page, "window.lab.screen()")
              .count("0 Read.Counter . 1 Read.Counter .") > before)
+    # imported here: it loads selenium's whole WebDriver (0.3 CPU-s), which every
+    # make test worker would pay at collection for a test only make test-browser runs
+    from selenium.webdriver.support.ui import Select
     Select(page.find_element(By.ID, "teach-lesson")).select_by_index(2)
     assert "missing ELSE" in page.find_element(By.ID, "teach-body").text or \
         "ramp" in page.find_element(By.ID, "teach-body").text
