@@ -22,18 +22,23 @@ def lda_block(address, data):
     return block + bytes([-sum(block) & 0o377])
 
 
-def ring_writes(sym, text, head):
-    """(address, bytes) the line `text` and its CR need in memory: the ring from
-    index `head` (split where it wraps) and RXHEAD after them (sym: kernel.map)."""
+def ring_pieces(sym, text, head):
+    """Where the line `text` and its CR go in the ring from index `head`:
+    ([(address, bytes)], split where the ring wraps; RXHEAD after them)
+    (sym: kernel.map). The one home of this arithmetic: ring_image() and
+    scripted_machine.feed_commands() both write these."""
     mask, ring = sym["RING-MASK"], sym["RING"]
-    data, at, writes = (text + "\r").encode("latin-1"), head, []
+    data, at, pieces = (text + "\r").encode("latin-1"), head, []
     while data:
         piece, data = data[:mask + 1 - at], data[mask + 1 - at:]
-        writes.append((ring + at, piece))
+        pieces.append((ring + at, piece))
         at = (at + len(piece)) & mask
-    return writes + [(sym["RXHEAD"], bytes([at & 0o377, at >> 8]))]
+    return pieces, at
 
 
 def ring_image(sym, text, head):
-    """The LOAD image of ring_writes(sym, text, head), its end block last."""
-    return b"".join(lda_block(a, d) for a, d in ring_writes(sym, text, head)) + END
+    """The LOAD image of ring_pieces(sym, text, head) and RXHEAD after them, its end
+    block last."""
+    pieces, after = ring_pieces(sym, text, head)
+    writes = pieces + [(sym["RXHEAD"], after.to_bytes(2, "little"))]
+    return b"".join(lda_block(a, d) for a, d in writes) + END

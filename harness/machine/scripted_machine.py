@@ -35,7 +35,7 @@ import pexpect
 from harness.machine import pty_child
 from harness.machine.build import KERNEL, KERNEL_MAP, MACHINE_INI, PDP11, ROOT
 from harness.machine.kernel_layout import KernelMapError, read_kernel_map
-from harness.machine.ring_image import ring_image
+from harness.machine.ring_image import ring_image, ring_pieces
 from harness.machine.simh import examined
 
 KERNEL_SYMBOLS = ("AWAIT-LINE", "RXHEAD", "RXTAIL", "RING", "RING-MASK", "TIB-SIZE")
@@ -83,11 +83,10 @@ def feed_commands(sym, text, head):
     advance RXHEAD, exactly as the DL11 receive interrupt would have; and, as
     that interrupt would, end a WAIT the kernel's KEY sleeps in (after `#wait`
     the machine stops there; the CPU then goes on to test the ring again)."""
-    mask, ring = sym["RING-MASK"], sym["RING"]
-    feed = [f"deposit -b {ring + ((head + i) & mask):o} {ord(c):o}"
-            for i, c in enumerate(text + "\r")]
-    return feed + [f"deposit {sym['RXHEAD']:o} {(head + len(text) + 1) & mask:o}",
-                   END_WAIT]
+    pieces, after = ring_pieces(sym, text, head)
+    return [f"deposit -b {address + i:o} {byte:o}"
+            for address, piece in pieces for i, byte in enumerate(piece)] + \
+        [f"deposit {sym['RXHEAD']:o} {after:o}", END_WAIT]
 
 
 FORTH_ERROR = re.compile(r"\r\nError: ([^\r\n]*)")

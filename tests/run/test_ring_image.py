@@ -1,6 +1,8 @@
-"""The scripted runs' line as one SIMH LOAD (harness/machine/ring_image.py): the
-image writes exactly the bytes the per-character DEPOSITs (feed_commands) wrote,
-where the ring wraps too, and every block's checksum holds."""
+"""The scripted runs' line as one SIMH LOAD (harness/machine/ring_image.py) and as
+per-character DEPOSITs (feed_commands, for the five machines and the benches):
+both write the line, its CR and RXHEAD where the DL11's receive interrupt would
+have (this file's own reference, the ring wrapping too), and every LOAD block's
+checksum holds."""
 import pytest
 
 from harness.machine.ring_image import ring_image
@@ -37,7 +39,18 @@ def loaded(image):
         at += count + 1
 
 
+def interrupt_writes(text, head):
+    """address -> byte as the receive interrupt leaves them: each character at RING
+    + (index AND RING-MASK), then RXHEAD (a word) the index after the CR."""
+    mask = SYM["RING-MASK"]
+    memory = {SYM["RING"] + ((head + i) & mask): ord(c) for i, c in enumerate(text + "\r")}
+    after = (head + len(text) + 1) & mask
+    return memory | {SYM["RXHEAD"]: after & 0o377, SYM["RXHEAD"] + 1: after >> 8}
+
+
 @pytest.mark.parametrize("text,head", [("1 2 + .", 0), ("", 511), ("x" * 255, 300),
                                        ("abc", 510), ("y" * 255, 0), ("z", 257)])
-def test_the_load_writes_what_the_deposits_wrote(text, head):
-    assert loaded(ring_image(SYM, text, head)) == deposited(feed_commands(SYM, text, head))
+def test_the_load_and_the_deposits_write_what_the_interrupt_would(text, head):
+    expected = interrupt_writes(text, head)
+    assert loaded(ring_image(SYM, text, head)) == expected
+    assert deposited(feed_commands(SYM, text, head)) == expected
