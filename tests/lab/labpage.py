@@ -1,5 +1,7 @@
 """Helpers of the lab's browser tests: waiting, and driving the page as a user."""
+import asyncio
 import os
+import threading
 import time
 from contextlib import contextmanager
 
@@ -87,7 +89,8 @@ def projector(page, width, height):
 
 def assert_on_screen(page, width, height, panels, buttons="header button"):
     """After a relayout: nothing scrolls, each panel is sizeable and inside the window,
-    and no button of `buttons` (a CSS selector) is cut off at the right."""
+    no button of `buttons` (a CSS selector) is cut off at the right, and the terminal
+    is drawn inside its box."""
     drawn = page.execute_script("window.dispatchEvent(new Event('resize'));"
                                 "return window.lab.frames || 0")
     wait_for("the page drawn again after the relayout", lambda: js(page, "window.lab.frames") > drawn)
@@ -100,3 +103,51 @@ def assert_on_screen(page, width, height, panels, buttons="header button"):
     rights = js(page, f"[...document.querySelectorAll('{buttons}')]"
                       ".map(b => b.getBoundingClientRect().right)")
     assert max(rights) <= width, "a button is cut off"
+    frames(page)
+    assert not terminal_spills(page), terminal_spills(page)
+
+
+def frames(page, n=3):
+    """Wait for n of the page's animation frames: what a resize observer asked is done."""
+    page.execute_async_script("const done = arguments[0]; let n = %d;"
+                              "const f = () => --n ? requestAnimationFrame(f) : done();"
+                              "requestAnimationFrame(f);" % n)
+
+
+def terminal_spills(page):
+    """What is wrong with the terminal's drawn screen (xterm.js's) where it is: out of its
+    box, over another panel, the console panel or the page scrolling; [] when nothing."""
+    return js(page, """(() => {
+      const box = (e) => e.getBoundingClientRect(), wrong = [];
+      const screen = box(document.querySelector('#terminal .xterm-screen'));
+      const term = box(document.getElementById('terminal'));
+      if (screen.bottom > term.bottom + 0.5 || screen.right > term.right + 0.5)
+        wrong.push(`the screen ends at ${screen.right}, ${screen.bottom}; its box at `
+                   + `${term.right}, ${term.bottom}`);
+      for (const panel of document.querySelectorAll('main > .panel:not([hidden])')) {
+        const p = box(panel);
+        if (panel.id !== 'console-panel' && screen.left < p.right && p.left < screen.right
+            && screen.top < p.bottom && p.top < screen.bottom) wrong.push(`over ${panel.id}`);
+      }
+      const con = document.getElementById('console-panel'), doc = document.documentElement;
+      if (con.scrollHeight > con.clientHeight) wrong.push('the console panel overflows');
+      if (doc.scrollWidth > innerWidth || doc.scrollHeight > innerHeight) wrong.push('the page scrolls');
+      return wrong; })()""")
+
+
+class AnotherPage:
+    """A second page (a websocket, in a thread of its own) that takes the keyboard."""
+
+    def __init__(self, server):
+        from harness.lab.page_client import Page      # aiohttp: for the few tests that use it
+        self.loop = asyncio.new_event_loop()
+        threading.Thread(target=self.loop.run_forever, daemon=True).start()
+        self.page = self.run(Page.open(server))
+        self.run(self.page.send({"t": "take"}))
+
+    def run(self, coroutine):
+        return asyncio.run_coroutine_threadsafe(coroutine, self.loop).result(30)
+
+    def close(self):
+        self.run(self.page.close())
+        self.loop.call_soon_threadsafe(self.loop.stop)

@@ -8,8 +8,8 @@ from selenium.webdriver.common.by import By
 from harness.analysis.trace import parse_rows
 from harness.machine.plant_rows import COLUMNS
 
-from labpage import ARTIFACTS, assert_on_screen, click, connected, full_session, js, pace, \
-    projector, serious_violations, type_line, wait_for
+from labpage import ARTIFACTS, AnotherPage, assert_on_screen, click, connected, frames, \
+    full_session, js, pace, projector, serious_violations, terminal_spills, type_line, wait_for
 
 # The lab boots with the amplifier rack off, as make run does: nothing drifts until
 # the page's switch is turned on after Set.Up.Robot. x10 keeps the run short.
@@ -170,6 +170,8 @@ def test_pause_holds_simulated_time_and_step_is_one_tick(page):
     textarea.send_keys("1 1 + .")                    # typed while paused: shown, waiting
     shown = wait_for("the typed-ahead line", lambda: page.find_element(By.ID, "typed-ahead"))
     assert shown.is_displayed() and "1 1 + ." in shown.text
+    frames(page)                                     # the terminal is refitted above it
+    assert not terminal_spills(page), terminal_spills(page)
     click(page, "#pause")                            # now reads "Run"
     wait_for("the run to go on", lambda: js(page, "window.lab.status.time") > stepped["time"])
     wait_for("the typed-ahead line to go",
@@ -209,6 +211,51 @@ def test_the_page_fits_both_projectors_without_scrolling(page, width, height):
         page.save_screenshot(str(ARTIFACTS / f"lab-{width}.png"))
         violations = serious_violations(page)
         assert not violations, violations
+        held = js(page, "window.lab.keyboard")        # another page's note, as its message
+        page.execute_script("takeKeyboard({holder: 'page 9', you: false})")   # would show it
+        try:                                         # (test_the_keyboard_note_...: a real one)
+            frames(page)
+            assert not terminal_spills(page), terminal_spills(page)
+            assert not heading_wrapped(page), heading_wrapped(page)
+        finally:
+            page.execute_script("takeKeyboard(arguments[0])", held)
+
+
+@full_session
+def test_the_keyboard_note_leaves_the_terminal_in_its_panel(page, lab_server):
+    """Another page takes the keyboard while the window keeps its size: the note and its
+    button come into the console's heading, on its one line, and the terminal is fitted
+    again below it (not only at a window's resize), over no other panel, nothing
+    scrolling. Screenshots build/test-artifacts/lab-keyboard-WIDTH.png."""
+    for width, height in ((1920, 1080), (1280, 720)):
+        page.execute_script("window.lab.take()")
+        wait_for("this page to hold the keyboard", lambda: js(page, "window.lab.keyboard.you"))
+        with projector(page, width, height):         # fitted with "You hold the keyboard"
+            frames(page)
+            other = AnotherPage(lab_server)
+            try:
+                wait_for("the note", lambda: page.find_element(By.ID, "take").is_displayed())
+                frames(page)
+                assert not terminal_spills(page), (width, terminal_spills(page))
+                assert not heading_wrapped(page), (width, heading_wrapped(page))
+                page.save_screenshot(str(ARTIFACTS / f"lab-keyboard-{width}.png"))
+                if width == 1280:                    # the button as the smaller size has it
+                    violations = serious_violations(page)
+                    assert not violations, violations
+            finally:
+                other.close()
+    page.execute_script("window.lab.take()")
+    wait_for("this page to hold the keyboard again", lambda: js(page, "window.lab.keyboard.you"))
+
+
+def heading_wrapped(page):
+    """The console heading's parts shown below its title's line (the heading wrapped)."""
+    return js(page, """(() => {
+      const h2 = document.querySelector('#console-panel h2'), title = document.createRange();
+      title.selectNodeContents(h2.firstChild);      // "Console"
+      const bottom = title.getBoundingClientRect().bottom;
+      return [...h2.children].filter((e) => e.getClientRects().length
+        && e.getBoundingClientRect().top >= bottom).map((e) => e.id || e.tagName); })()""")
 
 
 def test_the_badge_says_when_simh_has_the_machine_stopped(page):

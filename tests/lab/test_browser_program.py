@@ -4,17 +4,13 @@ stopped in; a block edited in the page, typed at the FORTH, FLUSHed and found on
 the disk image; a lesson's line typed by its button; an exercise's check run; the
 light theme and the largest text fit both projector sizes. Screenshots in
 build/test-artifacts/lab-program-*.png and lab-teach-*.png."""
-import asyncio
-import threading
-
 import pytest
 from selenium.webdriver.common.by import By
 
 from harness.analysis.listing import BLOCK_BYTES
-from harness.lab.page_client import Page
 
-from labpage import ARTIFACTS, assert_on_screen, click, connected, full_session, js, pace, \
-    projector, serious_violations, type_line, wait_for
+from labpage import ARTIFACTS, AnotherPage, assert_on_screen, click, connected, full_session, \
+    js, pace, projector, serious_violations, type_line, wait_for
 
 pytestmark = full_session
 
@@ -31,24 +27,6 @@ def page(lab_server, browser):
     connected(browser)
     yield browser
     browser.get("about:blank")      # as test_browser.py's page: nothing left ticking
-
-
-class AnotherPage:
-    """A second page (a websocket, in a thread of its own) that holds the keyboard
-    while the block is open."""
-
-    def __init__(self, server):
-        self.loop = asyncio.new_event_loop()
-        threading.Thread(target=self.loop.run_forever, daemon=True).start()
-        self.page = self.run(Page.open(server))
-        self.run(self.page.send({"t": "take"}))
-
-    def run(self, coroutine):
-        return asyncio.run_coroutine_threadsafe(coroutine, self.loop).result(30)
-
-    def close(self):
-        self.run(self.page.close())
-        self.loop.call_soon_threadsafe(self.loop.stop)
 
 
 def shown_lines(page):

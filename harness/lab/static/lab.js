@@ -48,6 +48,15 @@ function fitTerminal() {           // the largest font that shows the FORTH's 80
   fit.fit();
 }
 fitTerminal();
+// Fitted again whenever the terminal's box changes, at the next frame: the window's
+// size, and whatever comes and goes above or below it in the console panel (the
+// keyboard's note, the characters waiting, the typed-ahead line).
+let fitAsked = false;
+new ResizeObserver(() => {
+  if (fitAsked) return;
+  fitAsked = true;
+  requestAnimationFrame(() => { fitAsked = false; fitTerminal(); });
+}).observe(document.getElementById("terminal"));
 // Keys: the server holds what the machine has not read yet, within a bounded
 // queue; the page sends a paste in pieces (MAX_KEYS, protocol.py) as room is
 // reported (an `input` answer to each piece, and every data frame).
@@ -355,7 +364,7 @@ function frame(now) {
   }
   if (now - lastDrawn < KEEP_FRAMES_MS) { frameAsked = true; requestAnimationFrame(frame); }
 }
-window.addEventListener("resize", () => { fitTerminal(); lab.dirty = true; });
+window.addEventListener("resize", () => { lab.dirty = true; });   // the terminal refits itself
 document.addEventListener("click", () => { lab.dirty = true; });
 setInterval(drawTable, 100);
 lab.dirty = true;
