@@ -56,6 +56,20 @@ def pace(page, speed):
     wait_for(f"{speed} pace", lambda: js(page, "window.lab.status.speed") == speed)
 
 
+def pause(page):
+    """The page's Pause button; wait until the lab is paused (no data comes: the page
+    draws only when its view changes)."""
+    click(page, "#pause")
+    wait_for("the pause", lambda: js(page, "window.lab.status.state") == "pause")
+
+
+def run(page):
+    """Run again if the lab is paused (the Pause button then reads Run)."""
+    if js(page, "window.lab.status.state") == "pause":
+        click(page, "#pause")
+        wait_for("the run", lambda: js(page, "window.lab.status.state") == "run")
+
+
 def connected(page):
     """Wait until the page has its websocket and the server's hello (the axes)."""
     wait_for("the page to connect", lambda: page.execute_script(

@@ -9,7 +9,8 @@ from harness.analysis.trace import parse_rows
 from harness.machine.plant_rows import COLUMNS
 
 from labpage import ARTIFACTS, AnotherPage, assert_on_screen, click, connected, frames, \
-    full_session, js, pace, projector, serious_violations, terminal_spills, type_line, wait_for
+    full_session, js, pace, pause, projector, run, serious_violations, terminal_spills, type_line, \
+    wait_for
 
 # The lab boots with the amplifier rack off, as make run does: nothing drifts until
 # the page's switch is turned on after Set.Up.Robot. x10 keeps the run short.
@@ -68,8 +69,7 @@ def test_a_move_shows_on_the_robot_and_the_scope(page):
     origin = view["origin"]                           # Set.Up.Robot's zero: position - counter
     x = js(page, "window.lab.latest[0]")
     assert abs(origin[0] - (x[5] - x[6])) < 1.5     # the counter is the position, whole
-    click(page, "#pause")
-    wait_for("the pause", lambda: js(page, "window.lab.status.state") == "pause")
+    pause(page)
     scope = scope_after_the_move(page)
     assert scope["steps"] == [[0, 800]]               # Desire.Pos: one step, at the move
     assert scope["step_at"] > scope["start"]          # inside the window, with history before it
@@ -186,14 +186,15 @@ def test_the_page_fits_both_projectors_without_scrolling(page, width, height):
     """Each panel present, nothing scrolls, at both projector sizes; the screenshots
     (build/test-artifacts/lab-WIDTH.png) are looked at by eye."""
     if width == 1280:                                # a longer move, for the trail to show
-        if js(page, "window.lab.status.state") == "pause":     # the move test paused it
-            click(page, "#pause")                              # Run
-            wait_for("the run", lambda: js(page, "window.lab.status.state") == "run")
+        run(page)                                    # the move test paused it
         pace(page, "x10")                            # the move test chose real pace
         type_line(page, "3200 -2400 400 0 Abs.Move")
         wait_for("the move", lambda: js(page, "window.lab.latest[0][6]") > 3000)
-        pace(page, "real")                           # its trail (the last 10 simulated
-                                                     # seconds) stays in the screenshots
+        pace(page, "real")                           # as the later tests had it
+        pause(page)                                  # its trail (the last 10 simulated
+        # seconds) stays in the screenshots; and paused, no data comes, so the page
+        # draws only when the layout changes: running, Chromium drew ~27 frames a
+        # second through both sizes' checks, some 3 CPU-s of make test's
     with projector(page, width, height):
         assert_on_screen(page, width, height,
                          ("console-panel", "robot-panel", "servo-panel", "scope-panel"))
@@ -259,6 +260,7 @@ def heading_wrapped(page):
 
 
 def test_the_badge_says_when_simh_has_the_machine_stopped(page):
+    run(page)                                        # the projector test paused it
     textarea = page.find_element(By.CSS_SELECTOR, "#terminal textarea")
     textarea.send_keys("\x05")
     wait_for("the badge", lambda: page.find_element(By.ID, "state").text == "STOPPED sim>")
@@ -295,8 +297,7 @@ def test_an_io_breakpoint_shows_the_history_and_the_line_and_steps_one_instructi
     """The servo's write of DAC X (SET LAB IOBREAK=170440, io_break.c) stops the
     machine: the history before it, and the program pane on block 1008's line 1, where
     Interrupt.Servo is defined; Step 1 instruction moves the PC; Clear goes on."""
-    if js(page, "window.lab.status.state") == "pause":
-        click(page, "#pause")                                  # Run
+    run(page)
     page.find_element(By.ID, "iobreak-address").send_keys("170440")
     click(page, '#iobreak-form button[type="submit"]')
     wait_for("the history", lambda: page.find_element(By.ID, "history").is_displayed())
@@ -332,8 +333,7 @@ def test_an_io_breakpoint_shows_the_history_and_the_line_and_steps_one_instructi
 def test_the_asn_shows_its_trial_steps_payoff_and_weights(page):
     """Blocks 1070-1078 (docs/learning.md) after the move test's Set.Up.Robot."""
     assert js(page, "document.getElementById('asn').hidden")
-    if js(page, "window.lab.status.state") == "pause":
-        click(page, "#pause")                        # Run
+    run(page)
     click(page, '#speeds button[data-speed="full"]')
     assert "Error" not in type_line(page, "1070 LOAD")
     type_line(page, "1 Trials", timeout=120)

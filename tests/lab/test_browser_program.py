@@ -10,7 +10,7 @@ from selenium.webdriver.common.by import By
 from harness.analysis.listing import BLOCK_BYTES
 
 from labpage import ARTIFACTS, AnotherPage, assert_on_screen, click, connected, full_session, \
-    js, pace, projector, serious_violations, type_line, wait_for
+    js, pace, pause, projector, serious_violations, type_line, wait_for
 
 pytestmark = full_session
 
@@ -44,8 +44,7 @@ def test_the_pane_follows_the_load_and_marks_the_line_it_stopped_in(page):
     wait_for("the front panel to show a block loading",
              lambda: (js(page, "window.lab.panel && window.lab.panel.loading") or {})
              .get("block", 0) >= 1002, timeout=60)
-    click(page, "#pause")
-    wait_for("the pause", lambda: js(page, "window.lab.status.state") == "pause")
+    pause(page)
     wait_for("the badge (the page draws with the robot hidden)",
              lambda: page.find_element(By.ID, "state").text == "PAUSED")
     where = js(page, "window.lab.panel.loading")
