@@ -29,7 +29,7 @@ measure() runs build/pdp11: `setup` (SIMH lines) must leave the machine stopped
 where measuring starts (e.g. after `break`/`go`, or deposits and `deposit pc`);
 then it steps `instructions` instructions in chunks under history, and counts
 the clock's ticks over them, so `per_tick_us` is the average cost per 60 Hz tick.
-price_spans() does the pricing alone, on history lines and memory words.
+price_spans() does the pricing alone, on history text and memory words.
 """
 import itertools
 import re
@@ -46,7 +46,13 @@ CHUNK = 100_000                 # instructions per history chunk (SIMH allows 26
 MEMORY_TOP = 0o157776           # last word below the I/O page (56 KB of RAM)
 
 _STOP = re.compile(r"^(.+), PC: ([0-7]+)")
-_EXAMINE = re.compile(r"^([0-7]+):\s+([0-7]+)\s*$")
+# Lines read in runs: history ("PPPPPP SSSSSS|", 15 register columns, the
+# disassembly) and memory ("address:<tab>word"); a run ends at the newline
+# before a line of another kind.
+_HISTORY = r"[0-7]{6} [0-7]{6}\|.{15}"
+_EXAMINE = r"[0-7]+:[^\S\n]+[0-7]+[^\S\n]*\n"
+_HISTORY_LINE, _HISTORY_END = re.compile(_HISTORY), re.compile(rf"\n(?!{_HISTORY})")
+_EXAMINE_LINE, _EXAMINE_END = re.compile(_EXAMINE), re.compile(rf"\n(?!{_EXAMINE})")
 _HISTORY_HEADER = "PC     PSW     src    dst     IR"
 # Instructions that change the PSW themselves: a priority rise after them is not an
 # interrupt entry (a trap instruction's price already includes its trap sequence).
@@ -55,41 +61,6 @@ _OWN_PSW_CHANGE = ("MTPS", "RTI", "RTT", "EMT", "TRAP", "IOT", "BPT")
 
 class TimingError(RuntimeError):
     """The measurement could not be made (bad address, code changed, no span)."""
-
-
-class Executed(NamedTuple):
-    """One line of SHOW CPU HISTORY (register columns kept as text: the only
-    one needed, SOB's source register, is read when asked for)."""
-    pc: int
-    psw: int
-    registers: str          # the 15 columns "src    dst    ", blank where none
-    text: str               # SIMH's disassembly
-
-    @property
-    def priority(self):
-        return (self.psw >> 5) & 7
-
-    @property
-    def src(self):
-        regs = self.registers.split()
-        return int(regs[0], 8) if len(regs) == 2 else None
-
-    @property
-    def dst(self):
-        regs = self.registers.split()
-        return int(regs[-1], 8) if regs else None
-
-
-def parse_history_line(line):
-    """An Executed for a history line ("PPPPPP SSSSSS|" + 15 columns + text);
-    None for any other line. Fixed columns: this runs for every instruction."""
-    if len(line) < 30 or line[13] != "|" or line[6] != " ":
-        return None
-    try:
-        return Executed(int(line[:6], 8), int(line[7:13], 8), line[14:29],
-                        line[29:].strip())
-    except ValueError:
-        return None
 
 
 @dataclass
@@ -194,57 +165,140 @@ def _same_instruction(text, priced):
     return token == priced.mnemonic
 
 
-def _price(executed, word):
-    sob_taken = executed.src != 1          # SOB: R before the decrement
-    priced = kdf11.price(word, sob_taken=sob_taken)
-    if not _same_instruction(executed.text, priced):
-        raise TimingError(f"at {executed.pc:06o} SIMH executed {executed.text!r} but "
-                          f"memory now holds {word:06o} ({priced.mnemonic}): the code "
-                          "changed during the run")
-    return priced
+def _source_register(line):
+    """The src column's value, None when the instruction has no source."""
+    registers = line[14:29].split()
+    return int(registers[0], 8) if len(registers) == 2 else None
+
+
+class _Cost(NamedTuple):
+    """What one instruction (an address and its disassembly) costs in a span."""
+    mnemonic: str
+    microseconds: float | None
+    returns: bool                   # RTI or RTT
+    closes: bool                    # the span ends with it (unless in a nested interrupt)
+    not_taken: "_Cost | None"       # SOB: its cost when R was 1 before the decrement
 
 
 def price_spans(history, words, entry, end="rti", report=None):
-    """Price the spans in `history` (Executed records, in execution order).
-    `words`: address -> instruction word (memory after the run)."""
+    """Price the spans in `history`: pieces of SHOW CPU HISTORY text, each whole
+    history lines ended by newlines, in execution order (the lines of one
+    execution may be split between pieces). `words`: address -> instruction
+    word (memory after the run)."""
     if end != "rti" and not isinstance(end, int):
         raise TimingError(f"end must be 'rti' or an address, not {end!r}")
     report = report or TimingReport(entry, end)
-    by_mnemonic = defaultdict(lambda: [0, 0.0], report.by_mnemonic)
-    span, depth, prev = None, 0, None
-    for ex in history:
-        interrupted = (prev is not None and (ex.psw & 0o340) > (prev.psw & 0o340)
-                       and prev.text.split()[0] not in _OWN_PSW_CHANGE)
-        if span is None and ex.pc == entry:
-            span = Span(ex.pc, interrupt_entry=interrupted)
-            if interrupted:
-                span.microseconds += kdf11.INTERRUPT_ENTRY
-                by_mnemonic["(interrupt entry)"][0] += 1
-                by_mnemonic["(interrupt entry)"][1] += kdf11.INTERRUPT_ENTRY
-        elif span is not None and interrupted:
-            depth += 1                      # a nested interrupt: its cost counts too
-        prev = ex
-        if span is None:
-            continue
-        if ex.pc not in words:
-            raise TimingError(f"no memory word read for the instruction at {ex.pc:06o}")
-        priced = _price(ex, words[ex.pc])
-        span.instructions += 1
-        if priced.microseconds is None:
-            report.unpriced[priced.mnemonic] += 1
-        else:
-            span.microseconds += priced.microseconds
-            by_mnemonic[priced.mnemonic][0] += 1
-            by_mnemonic[priced.mnemonic][1] += priced.microseconds
-        returning = priced.mnemonic in ("RTI", "RTT")
-        if returning and depth:
-            depth -= 1
-        elif (end == "rti" and returning) or (end != "rti" and ex.pc == end):
-            report.spans.append(span)
-            span = None
-    report.incomplete += span is not None
-    report.by_mnemonic = dict(by_mnemonic)
+    spans = _Spans(words, entry, end, report)
+    for piece in history:
+        spans.read(piece)
+    report.incomplete += spans.span is not None
+    report.by_mnemonic = dict(spans.by_mnemonic)
     return report
+
+
+class _Spans:
+    """price_spans()'s work. Between spans it looks for the entry's next line
+    with str.find, without reading the lines between (most of a long run: an
+    idle loop between interrupts); in a span it reads every line. An
+    instruction's cost is worked out once per address and disassembly, the
+    check against memory with it (the code does not change, or the
+    disassembly does)."""
+
+    def __init__(self, words, entry, end, report):
+        self.words, self.entry, self.report = words, entry, report
+        self.entry_line = f"{entry:06o} "
+        self.end_pc = None if end == "rti" else f"{end:06o}"
+        self.by_mnemonic = defaultdict(lambda: [0, 0.0], report.by_mnemonic)
+        self.costs = {}                 # (pc, disassembly) -> _Cost
+        self.span, self.depth = None, 0
+        self.last = None                # the line before the piece being read
+
+    def read(self, piece):
+        pos = 0
+        while pos < len(piece):
+            if self.span is None:
+                if not piece.startswith(self.entry_line, pos):
+                    pos = piece.find("\n" + self.entry_line, pos) + 1
+                    if pos == 0:
+                        break
+            pos = self._through_span(piece, pos)
+        if piece:
+            self.last = piece[piece.rfind("\n", 0, len(piece) - 1) + 1:-1]
+
+    def _through_span(self, piece, pos):
+        """Read from the line at `pos` (the entry's, if no span is under way)
+        until the span ends or the piece does; where reading stopped. The
+        loop runs for every instruction of every span, on local names."""
+        prev = piece[piece.rfind("\n", 0, pos - 1) + 1:pos - 1] if pos else self.last
+        prev_priority = 0o400 if prev is None else int(prev[7:13], 8) & 0o340
+        span, depth, costs = self.span, self.depth, self.costs
+        by_mnemonic, unpriced = self.by_mnemonic, self.report.unpriced
+        if span is not None:
+            count, micro = span.instructions, span.microseconds
+        while pos < len(piece):
+            nl = piece.index("\n", pos)
+            line, pos = piece[pos:nl], nl + 1
+            priority = int(line[7:13], 8) & 0o340
+            interrupted = (priority > prev_priority
+                           and prev[29:].split()[0] not in _OWN_PSW_CHANGE)
+            prev, prev_priority = line, priority
+            if span is None:
+                span, count, micro = self._start(interrupted)
+            elif interrupted:
+                depth += 1                  # a nested interrupt: its cost counts too
+            key = line[:6], line[29:]
+            mnemonic, us, returns, closes, not_taken = costs.get(key) or self._cost(key)
+            if not_taken and _source_register(line) == 1:
+                mnemonic, us, returns, closes, _ = not_taken
+            count += 1
+            if us is None:
+                unpriced[mnemonic] += 1
+            else:
+                micro += us
+                tally = by_mnemonic[mnemonic]
+                tally[0] += 1
+                tally[1] += us
+            if returns and depth:
+                depth -= 1
+            elif closes:
+                span.instructions, span.microseconds = count, micro
+                self.report.spans.append(span)
+                span = None
+                break
+        if span is not None:
+            span.instructions, span.microseconds = count, micro
+        self.span, self.depth = span, depth
+        return pos
+
+    def _start(self, interrupted):
+        """A new span, its instruction count and microseconds so far."""
+        span = Span(self.entry, interrupt_entry=interrupted)
+        if interrupted:
+            span.microseconds += kdf11.INTERRUPT_ENTRY
+            self.by_mnemonic["(interrupt entry)"][0] += 1
+            self.by_mnemonic["(interrupt entry)"][1] += kdf11.INTERRUPT_ENTRY
+        return span, span.instructions, span.microseconds
+
+    def _cost(self, key):
+        """The _Cost of the instruction at `key` = (pc, disassembly), checked
+        against memory: SIMH's disassembly must name the word's instruction."""
+        pc, text = int(key[0], 8), key[1].strip()
+        if pc not in self.words:
+            raise TimingError(f"no memory word read for the instruction at {pc:06o}")
+        word = self.words[pc]
+        taken = kdf11.price(word)
+        if not _same_instruction(text, taken):
+            raise TimingError(f"at {pc:06o} SIMH executed {text!r} but memory now "
+                              f"holds {word:06o} ({taken.mnemonic}): the code changed "
+                              "during the run")
+
+        def cost(priced, not_taken=None):
+            returns = priced.mnemonic in ("RTI", "RTT")
+            closes = returns if self.end_pc is None else key[0] == self.end_pc
+            return _Cost(priced.mnemonic, priced.microseconds, returns, closes, not_taken)
+        not_taken = cost(kdf11.price(word, sob_taken=False)) if taken.mnemonic == "SOB" else None
+        self.costs[key] = cost(taken, not_taken)
+        return self.costs[key]
 
 
 def _measure_script(setup, instructions, chunk):
@@ -262,37 +316,63 @@ def _measure_script(setup, instructions, chunk):
 
 class _Output:
     """Reads measure()'s simulator output: memory words and clock registers
-    into attributes, history records yielded as they come."""
+    into attributes, runs of history lines yielded (as text) as they come.
+    Runs of history and of memory lines are found and read in bulk: a
+    measurement prints a line per instruction and one per memory word."""
 
     def __init__(self):
         self.words, self.registers, self.stopped = {}, [], None
         self._blocks, self._last_block = 0, None
 
-    def records(self, lines):
-        for line in lines:
-            if line.startswith(_HISTORY_HEADER):
-                self._blocks += 1
-                continue
-            rec = parse_history_line(line)
-            if rec is not None:
-                if self._blocks and (self._last_block is None
-                                     or self._blocks <= self._last_block):
-                    yield rec
-                continue
-            m = _EXAMINE.match(line)
-            if m:
-                self.words[int(m.group(1), 8)] = int(m.group(2), 8)
-            elif line.startswith(("RATE:", "TICKS:")):
-                self.registers.append(int(line.split()[1]))
-            else:
-                m = _STOP.match(line)
-                # stops before RATE and TICKS were read belong to the setup
-                # (breakpoints that bring the machine to where measuring starts)
-                if m and not m.group(1).strip().startswith("Step expired") \
-                        and self.stopped is None and len(self.registers) >= 2:
-                    # the chunk that stopped is still shown; later ones are not
-                    self.stopped = f"{m.group(1).strip()} at PC {m.group(2)}"
-                    self._last_block = self._blocks + 1
+    def history(self, out):
+        for text in _whole_lines(out):
+            pos = 0
+            while pos < len(text):
+                if _HISTORY_LINE.match(text, pos):
+                    end = _HISTORY_END.search(text, pos).end()
+                    if self._blocks and (self._last_block is None
+                                         or self._blocks <= self._last_block):
+                        yield text[pos:end]
+                elif _EXAMINE_LINE.match(text, pos):
+                    end = _EXAMINE_END.search(text, pos).end()
+                    self._memory(text[pos:end])
+                else:
+                    end = text.index("\n", pos) + 1
+                    self._line(text[pos:end])
+                pos = end
+
+    def _memory(self, lines):
+        numbers = iter(lines.replace(":", " ").split())     # address, word, ...
+        self.words.update({int(a, 8): int(w, 8) for a, w in zip(numbers, numbers)})
+
+    def _line(self, line):
+        if line.startswith(_HISTORY_HEADER):
+            self._blocks += 1
+        elif line.startswith(("RATE:", "TICKS:")):
+            self.registers.append(int(line.split()[1]))
+        else:
+            m = _STOP.match(line)
+            # stops before RATE and TICKS were read belong to the setup
+            # (breakpoints that bring the machine to where measuring starts)
+            if m and not m.group(1).strip().startswith("Step expired") \
+                    and self.stopped is None and len(self.registers) >= 2:
+                # the chunk that stopped is still shown; later ones are not
+                self.stopped = f"{m.group(1).strip()} at PC {m.group(2)}"
+                self._last_block = self._blocks + 1
+
+
+def _whole_lines(out, size=1 << 18):
+    """The text read from `out`, in pieces of whole lines."""
+    rest = ""
+    while piece := out.read(size):
+        cut = piece.rfind("\n") + 1
+        if cut:
+            yield rest + piece[:cut]
+            rest = piece[cut:]
+        else:
+            rest += piece
+    if rest:
+        yield rest + "\n"
 
 
 def measure(setup, entry=None, end="rti", instructions=RATE, chunk=CHUNK,
@@ -312,16 +392,16 @@ def measure(setup, entry=None, end="rti", instructions=RATE, chunk=CHUNK,
     reader = _Output()
     with simh.stream(_measure_script(setup, instructions, chunk), machine, simulator,
                      timeout, keyboard=keyboard) as out:
-        records = reader.records(out)
-        first = next(records, None)         # memory has been read by now
+        history = reader.history(out)
+        first = next(history, None)         # memory has been read by now
         if vector is not None:
             if vector not in reader.words:
                 raise TimingError(f"vector {vector:o}: no such memory word")
             entry = reader.words[vector]
         report = TimingReport(entry, end, instructions_run=instructions)
         if first is not None:
-            price_spans(itertools.chain([first], records), reader.words, entry, end, report)
-        for _ in records:                   # whatever follows the last history
+            price_spans(itertools.chain([first], history), reader.words, entry, end, report)
+        for _ in history:                   # whatever follows the last history
             pass
     if len(reader.registers) != 3:
         raise TimingError("the simulator did not report the clock's RATE and TICKS "

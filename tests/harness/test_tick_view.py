@@ -41,17 +41,3 @@ def test_three_ticks_of_a_move_on_x(capsys):
 def test_a_bad_setup_line_is_reported(capsys):
     assert main(["tick", "--setup", "NOSUCH"]) == 1
     assert "undefined word: NOSUCH" in capsys.readouterr().err
-
-
-def test_servo_md_cost_table_matches_timing_servo():
-    """docs/servo.md's cost table is what `timing --servo move` measures (instruction
-    counts and KDF11-A prices, no host time): a kernel change that moves it shows here."""
-    from harness.analysis import servo_timing
-    from harness.machine.build import ROOT
-    row = re.search(r"^\| during a move [^|]*\| (\d+) \| ([\d.]+) \| (\d+) \|",
-                    (ROOT / "docs" / "servo.md").read_text(), re.M)
-    _, report = servo_timing.measure("move")
-    assert report.count == int(row[1])
-    per_tick = report.total_instructions / report.count
-    assert abs(per_tick - float(row[2])) <= 0.03 * float(row[2]), per_tick
-    assert abs(report.mean_us - float(row[3])) <= 0.03 * float(row[3]), report.mean_us

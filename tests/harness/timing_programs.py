@@ -4,16 +4,17 @@ from harness.analysis.pdp11prog import Program
 from servo_program import LKS
 
 
+def _count(h):
+    h.op("MOV R0,-(SP)", 0o010046)               # 1.800 + 0 + 1.950 (dest g1 mode 4)
+    h.inc_abs(0o2000)                            # 1.800 + 3.825 (dest g3 mode 3)
+    h.op("MOV (SP)+,R0", 0o012600)               # 1.800 + 1.200 (src g1 mode 2)
+
+
 def counting_handler():
     """Clock interrupts on, spin; the handler at 1400 saves R0, counts, restores."""
     p = Program()
     p.mov_imm(0o100, LKS).loop_forever()
-
-    def body(h):
-        h.op("MOV R0,-(SP)", 0o010046)           # 1.800 + 0 + 1.950 (dest g1 mode 4)
-        h.inc_abs(0o2000)                        # 1.800 + 3.825 (dest g3 mode 3)
-        h.op("MOV (SP)+,R0", 0o012600)           # 1.800 + 1.200 (src g1 mode 2)
-    return p.handler(0o100, 0o1400, body)        # + RTI 5.550
+    return p.handler(0o100, 0o1400, _count)      # + RTI 5.550
 
 
 HANDLER_US = 3.75 + 5.625 + 3.0 + 5.55 + 9.375  # + the interrupt entry estimate: 27.3
@@ -30,3 +31,18 @@ def call_program():
 
 
 CALL_US = 3.0 + 4 * 2.7 + 2.4 + 1.8 + 3.0       # 21.0
+
+
+def mixed_program(passes=2000):
+    """Clock interrupts (counting_handler's handler) over `passes` rounds of a
+    SOB delay and a TRAP (its handler at 1500 clears R1), then HALT: spans
+    with nested interrupts, SOB taken and not, a trap's RTI, a stop."""
+    p = Program()
+    p.mov_imm(0o100, LKS).mov_imm_reg(passes, 2)                 # 1000, 1006
+    top = p.here                                                 # 1012
+    p.mov_imm_reg(3, 0).sob_self(0)                              # 1012, 1016
+    p.op("TRAP 0", 0o104400)                                     # 1020
+    p.op(f"SOB R2,{top:o}", 0o077200 | (p.here + 2 - top) // 2)  # 1022
+    p.halt()                                                     # 1024
+    p.handler(0o100, 0o1400, _count)
+    return p.handler(0o34, 0o1500, lambda h: h.op("CLR R1", 0o005001))
