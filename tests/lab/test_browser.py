@@ -31,6 +31,7 @@ def test_the_terminal_answers(page):
     assert "token=" not in page.current_url          # off the address bar
     violations = serious_violations(page)            # before 1000 LOAD: no servo data yet
     assert not violations, violations
+    assert breakpoint_row_in_the_panel(page)          # under the servo table's first note
 
 
 def test_a_move_shows_on_the_robot_and_the_scope(page):
@@ -76,6 +77,14 @@ def test_a_move_shows_on_the_robot_and_the_scope(page):
     assert min(scope["counter"]) < 50 and max(scope["counter"]) > 700   # X's counter moved
     low, high = js(page, "[window.lab.scope.plot.scales.counts.min, window.lab.scope.plot.scales.counts.max]")
     assert low <= min(scope["counter"]) and max(scope["counter"]) <= high   # all of it in sight
+
+
+def breakpoint_row_in_the_panel(page):
+    """The breakpoint row's bottom is inside the servo panel's (not below its fold)."""
+    row, servo = (js(page, f"document.getElementById('{e}').getBoundingClientRect().bottom")
+                  for e in ("break-row", "servo-panel"))
+    assert row <= servo, f"the breakpoint row ends at {row}, below the servo panel's fold at {servo}"
+    return True
 
 
 def scope_after_the_move(page):
@@ -203,9 +212,7 @@ def test_the_page_fits_both_projectors_without_scrolling(page, width, height):
         assert js(page, "window.lab.panel.registers.length") == 8
         box = js(page, "document.getElementById('front-panel').getBoundingClientRect().toJSON()")
         assert box["bottom"] <= height, "the front panel is cut off"
-        row, servo = (js(page, f"document.getElementById('{e}').getBoundingClientRect().bottom")
-                      for e in ("break-row", "servo-panel"))
-        assert row <= servo, "the breakpoint row is below the servo panel's fold"
+        assert breakpoint_row_in_the_panel(page)
         low, high = js(page, "[window.lab.scope.plot.scales.counts.min, window.lab.scope.plot.scales.counts.max]")
         shown = [v for v in js(page, "window.lab.scope.plot.data[1]") if v is not None]
         assert low <= min(shown) and max(shown) <= high     # the scope's counts all in sight

@@ -307,7 +307,7 @@ function drawTable() {
     .map((n) => `${n} = ${lab.servo[n]}`);
   const note = known.length
     ? `${singles.join(", ")} \u00b7 block 1000's variables, read each 60 Hz tick`
-    : "The servo's variables appear once the blocks define them (1000 LOAD): they are found by name in the dictionary.";
+    : "The servo's variables appear once 1000 LOAD defines them (found by name).";   // one line at 1280
   html += `<tr class="note"><td colspan="${lab.perAxis.length + 2}">${note}</td></tr>`;
   if (html !== tableHtml) body.innerHTML = tableHtml = html;   // unchanged: no relayout
   drawAsn();
