@@ -3,14 +3,12 @@
     fig = moves_figure(trace, "X")            # the paper's Figure 2 from a real run
     fig = time_figure(trace)                  # position and velocity against time
     fig = zero_figure(trace, offsets={"X": 3.0})   # the 0-Vel adaptation
-    save(fig, ["out.png", "out.svg"])         # all files whole, or none
+    save(fig, ["out.png", "out.svg"])         # all files whole, or none (plot_files.py)
 
 Each builder returns a matplotlib Figure whose axes carry titles, units and
 legends; the definitions behind the marks (D0..D3, idle rows) are in
 harness/analysis/moves.py and docs/plots.md.
 """
-import os
-import tempfile
 import textwrap
 from pathlib import Path
 
@@ -21,10 +19,16 @@ from matplotlib.figure import Figure  # noqa: E402  (after choosing the backend)
 
 from harness.analysis import moves as mv  # noqa: E402
 from harness.analysis.plot_errors import PlotError  # noqa: E402,F401  (raised here)
+from harness.analysis.plot_files import save, save_all  # noqa: E402,F401  (plots.save)
 from harness.analysis.trace import DAC_ZERO  # noqa: E402
 
 WIDTH = 6.4                       # inches per panel
 TITLE_CHARS = 64                  # characters of a title line per panel
+# A panel's title just above it, fixed: left to matplotlib, its place is worked
+# out at every measuring and drawing of the panel, from the y axis's tick labels
+# measured again, only to clear an offset text (a corner's "1e4"), which these
+# centred titles never meet.
+TITLE_Y = 1.0
 STYLE = {"commanded": dict(color="tab:blue", lw=1.4, drawstyle="steps-post"),
          "actual": dict(color="tab:orange", lw=1.4),
          "held": dict(color="tab:green", lw=0, marker=".", ms=3),
@@ -84,7 +88,7 @@ def _move_panel(ax, series, move, label, kv):
     arrow = "+" if move.direction > 0 else "-"
     ax.set_title(f"{label}: {move.d0:.0f} to {move.d3:.0f} counts ({arrow}{move.travel:.0f}),"
                  f"\nt = {move.t0:.2f}-{move.t1:.2f} s, peak {move.peak_code} codes "
-                 f"above 0-Vel {move.zero_code}", fontsize=9)
+                 f"above 0-Vel {move.zero_code}", fontsize=9, y=TITLE_Y)
     ax.set_xlabel("distance travelled from D0, counts")
     ax.set_ylabel("velocity in the direction of travel, counts/s")
     ax.grid(True, alpha=0.3)
@@ -141,11 +145,11 @@ def time_figure(trace, axes=None, windows=()):
     grid = fig.subplots(len(rows), 2, squeeze=False)
     for (pos_ax, vel_ax), s in zip(grid, rows):
         pos_ax.plot(s.time, s.pos, color="tab:purple", lw=1.2, label="position (pos)")
-        pos_ax.set_title(f"axis {s.axis}: position", fontsize=10)
+        pos_ax.set_title(f"axis {s.axis}: position", fontsize=10, y=TITLE_Y)
         pos_ax.set_ylabel("position, counts")
         vel_ax.plot(s.time, s.vcmd, label="commanded velocity (vcmd)", **STYLE["commanded"])
         vel_ax.plot(s.time, s.vel, label="actual velocity (vel)", **STYLE["actual"])
-        vel_ax.set_title(f"axis {s.axis}: velocity", fontsize=10)
+        vel_ax.set_title(f"axis {s.axis}: velocity", fontsize=10, y=TITLE_Y)
         vel_ax.set_ylabel("velocity, counts/s")
         for ax in (pos_ax, vel_ax):
             ax.set_xlabel("simulated time, s")
@@ -187,7 +191,7 @@ def zero_figure(trace, axes=None, windows=(), offsets=None, kv=None, v_idle=mv.V
         if values:
             ax.set_ylim(min(values) - 2, max(values) + 2)
         ax.set_xlim(s.time[0], s.time[-1])
-        ax.set_title(f"axis {s.axis}: zero-velocity code", fontsize=10)
+        ax.set_title(f"axis {s.axis}: zero-velocity code", fontsize=10, y=TITLE_Y)
         ax.set_xlabel("simulated time, s")
         ax.set_ylabel("DAC code (2048 = 0 V)")
         ax.yaxis.get_major_locator().set_params(integer=True)
@@ -196,42 +200,6 @@ def zero_figure(trace, axes=None, windows=(), offsets=None, kv=None, v_idle=mv.V
     fig.suptitle(f"0-Vel adaptation: the code an idle axis is held at, "
                  f"{Path(trace.name).name}")
     return fig
-
-
-def _umask():
-    mask = os.umask(0)
-    os.umask(mask)
-    return mask
-
-
-def save(fig, paths):
-    """Write `fig` to each path (format from the suffix: .png or .svg)."""
-    save_all([(fig, paths)])
-
-
-def save_all(figures):
-    """Write every (figure, paths) pair; each file is rendered to a temporary
-    name beside it and all are renamed only when all rendered, so a failure
-    leaves no file half-written and none of the set replaced."""
-    done = []
-    try:
-        for fig, paths in figures:
-            for path in map(Path, paths):
-                fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
-                os.close(fd)
-                os.chmod(tmp, 0o666 & ~_umask())     # as an ordinary new file
-                done.append((tmp, path))
-                svg = path.suffix == ".svg"
-                # a fixed salt and no date: the same trace gives the same SVG
-                with matplotlib.rc_context({"svg.hashsalt": "robot-1983"}):
-                    fig.savefig(tmp, format=path.suffix.lstrip("."), dpi=100,
-                                metadata={"Date": None} if svg else None)
-        for tmp, path in done:
-            os.replace(tmp, path)
-    finally:
-        for tmp, _ in done:
-            if os.path.exists(tmp):
-                os.unlink(tmp)
 
 
 def architectures_figure(columns, axes, title):
@@ -250,7 +218,7 @@ def architectures_figure(columns, axes, title):
             ax.plot(s.time, s.counter, color="tab:purple", lw=1.2, label="counter")
             ax.set_ylabel("counter, counts")
             ax.set_xlabel("simulated time, s")
-            ax.set_title(f"{label}: axis {letter}", fontsize=10)
+            ax.set_title(f"{label}: axis {letter}", fontsize=10, y=TITLE_Y)
             ax.grid(True, alpha=0.3)
             dac = ax.twinx()
             dac.plot(s.time, s.dac, label="D/A code", **{**STYLE["dac"], "color": "tab:green"})

@@ -100,11 +100,16 @@ def test_zero_figure_held_codes_and_offsets(plots, tr):
 
 def test_save_writes_valid_png_and_svg(plots, tr, tmp_path):
     fig = plots.time_figure(tr, "X")
+    engine = fig.get_layout_engine()
     png, svg = tmp_path / "f.png", tmp_path / "f.svg"
     plots.save(fig, [png, svg])
     assert png.read_bytes()[:8] == PNG_MAGIC
     assert ET.parse(svg).getroot().tag == "{http://www.w3.org/2000/svg}svg"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["f.png", "f.svg"]
+    # laid out once for both formats (plot_files.py), the PNG is still savefig's own
+    assert fig.get_layout_engine() is engine
+    fig.savefig(tmp_path / "own.png", dpi=100)
+    assert (tmp_path / "own.png").read_bytes() == png.read_bytes()
 
 
 def test_save_failure_leaves_nothing(plots, tr, tmp_path):
