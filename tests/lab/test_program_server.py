@@ -25,9 +25,11 @@ def talk(server, messages, wanted):
                                        headers={"Origin": f"http://127.0.0.1:{server.port}"}) as ws:
                 for message in messages:
                     await ws.send_str(json.dumps(message))
-                answers = []
-                while len(answers) < len(messages):
-                    msg = await ws.receive(timeout=TIMEOUT)
+                answers, deadline = [], asyncio.get_running_loop().time() + TIMEOUT
+                while len(answers) < len(messages):     # data messages come all the time:
+                    left = deadline - asyncio.get_running_loop().time()   # the deadline is
+                    assert left > 0, f"answers {answers} in {TIMEOUT} s"  # the loop's
+                    msg = await ws.receive(timeout=left)
                     m = json.loads(msg.data)
                     if m["t"] in wanted:
                         answers.append(m)

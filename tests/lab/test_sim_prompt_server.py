@@ -18,22 +18,34 @@ class Page:
 
     def __init__(self, server, ws):
         self.server, self.ws, self.screen = server, ws, ""
+        self.errors = []                # what the lab refused ("error" messages)
 
     async def type(self, text):
         await self.ws.send_str(json.dumps({"t": "key", "d": text}))
 
     async def until(self, pattern, start=0):
-        """Read console output until `pattern` appears after `start`; the text."""
+        """Read console output until `pattern` appears after `start`; the text. The
+        lab's data messages never stop coming, so the deadline is the loop's: a
+        receive's own timeout would never expire."""
         regex = re.compile(pattern)
         loop = asyncio.get_running_loop()
         deadline = loop.time() + TIMEOUT
         while not regex.search(self.screen, start):
-            msg = await self.ws.receive(timeout=max(0.1, deadline - loop.time()))
+            left = deadline - loop.time()
+            try:
+                if left <= 0:
+                    raise asyncio.TimeoutError
+                msg = await self.ws.receive(timeout=left)
+            except asyncio.TimeoutError:
+                raise AssertionError(f"no {pattern!r} in {TIMEOUT} s; refused: {self.errors}; "
+                                     f"console:\n{self.screen[-2000:]}") from None
             if msg.type != aiohttp.WSMsgType.TEXT:
                 raise AssertionError(f"the socket closed; console:\n{self.screen[-2000:]}")
             message = json.loads(msg.data)
             if message["t"] in ("con", "hello"):
                 self.screen += message.get("d", message.get("con", ""))
+            elif message["t"] == "error":
+                self.errors.append(message["why"])
         return self.screen[start:]
 
     async def at_sim(self, line, answer):
@@ -50,6 +62,9 @@ def session(server, steps):
                                        headers={"Origin": f"http://127.0.0.1:{server.port}"}) as ws:
                 page = Page(server, ws)
                 await page.until(r"ok\r\n")          # the FORTH is up
+                # the page before this one may hold the keyboard still (its close not yet
+                # handled): its keys would be refused. One socket's messages go in order.
+                await ws.send_str(json.dumps({"t": "take"}))
                 return await steps(page)
     return asyncio.run(run())
 
