@@ -21,15 +21,17 @@ full_session = pytest.mark.skipif(not os.environ.get("LAB_BROWSER_FULL"),
                                   reason="the whole browser session runs with make test-browser")
 
 
-def wait_for(what, condition, timeout=30, poll=0.05):
-    """Poll condition() until it is true; its last value, or an AssertionError."""
+def wait_for(what, condition, timeout=30, poll=0.05, seen=None):
+    """Poll condition() until it is true; its last value, or an AssertionError
+    (with what seen() returns then, to tell a slow host from a stuck lab)."""
     deadline = time.monotonic() + timeout
     while True:
         value = condition()
         if value:
             return value
         if time.monotonic() > deadline:
-            raise AssertionError(f"timed out after {timeout} s waiting for {what}")
+            raise AssertionError(f"timed out after {timeout} s waiting for {what}"
+                                 + (f"; {seen()}" if seen else ""))
         time.sleep(poll)
 
 
