@@ -1,8 +1,6 @@
 """The 11/23's front panel: R rows decoded (harness/lab/front_panel.py) and, in a
 running lab, the registers, the words named from the dictionary, the block and
 line being loaded, and the bus devices' registers reaching the page."""
-import asyncio
-import json
 import re
 
 from harness.lab.dictionary import Memory
@@ -43,20 +41,16 @@ def test_words_are_named_from_the_dictionary_and_the_map():
 
 def test_the_page_gets_the_panel_while_the_blocks_load(lab_server):
     async def steps(page):
-        await page.ws.send_str(json.dumps({"t": "speed", "v": "x10"}))
+        await page.send({"t": "speed", "v": "x10"})
         await page.type("1000 LOAD\r")
         panels = []
-        loop = asyncio.get_running_loop()
-        deadline = loop.time() + 60
-        while loop.time() < deadline:
-            message = json.loads((await page.ws.receive(timeout=60)).data)
+
+        def kept(message):                   # each panel, until the load's ok
             if message["t"] == "data" and message.get("panel"):
                 panels.append(message["panel"])
-            elif message["t"] == "con":
-                page.screen += message["d"]
-                if "LOAD  ok" in page.screen:
-                    break
-        await page.ws.send_str(json.dumps({"t": "speed", "v": "full"}))
+            return "LOAD  ok" in page.screen
+        await page.message(kept, timeout=60)
+        await page.send({"t": "speed", "v": "full"})
         return panels
     panels = session(lab_server, steps)
     loading = {p["loading"]["block"] for p in panels if p["loading"]}
@@ -66,19 +60,6 @@ def test_the_page_gets_the_panel_while_the_blocks_load(lab_server):
     assert last["pc_in"] and last["ip_in"]                  # named from the dictionary
     devices = {f'{d["device"]} {d["register"]}': d["value"] for d in last["devices"]}
     assert devices["AAV11-A DAC X"] == "4000" and len(devices["KW11-L LKS"]) == 6
-
-
-async def until_message(page, wanted, timeout=30):
-    """The first message `wanted` accepts; console output on the way is kept."""
-    loop = asyncio.get_running_loop()
-    deadline = loop.time() + timeout
-    while loop.time() < deadline:
-        message = json.loads((await page.ws.receive(timeout=timeout)).data)
-        if message["t"] == "con":
-            page.screen += message["d"]
-        if wanted(message):
-            return message
-    raise AssertionError(f"no such message in {timeout} s; console:\n{page.screen[-1500:]}")
 
 
 def test_a_breakpoint_on_a_forth_word_stops_with_its_history(lab_server):
@@ -92,17 +73,17 @@ def test_a_breakpoint_on_a_forth_word_stops_with_its_history(lab_server):
         await page.type(": TWICE ( n -- 2n ) DUP + ;\r")
         await page.until(r"ok\r\n", start)
         start = len(page.screen)
-        await page.ws.send_str(json.dumps({"t": "break", "word": "twice"}))   # defined just now:
+        await page.send({"t": "break", "word": "twice"})   # defined just now:
         said = await page.until(r"\[lab\] (breakpoint on|no word) [^\r]*\r", start)   # the lab
         assert "breakpoint on twice" in said, said            # reads the dictionary first
         await page.until(r"sim> cont", start)
         await answering(page)                           # the machine runs again
         await page.type("3 TWICE .\r")
-        history = (await until_message(page, lambda m: m["t"] == "history"))["rows"]
+        history = (await page.message(lambda m: m["t"] == "history"))["rows"]
         said = page.screen[start:]
-        await page.ws.send_str(json.dumps({"t": "nobreak"}))
+        await page.send({"t": "nobreak"})
         await page.until(r"nobreak all[\s\S]*6  ok", start)
-        await page.ws.send_str(json.dumps({"t": "break", "word": "No.Such.Word"}))
+        await page.send({"t": "break", "word": "No.Such.Word"})
         await page.until(r"no word No.Such.Word in the dictionary", start)
         return said, history
     said, history = session(lab_server, steps)
@@ -124,27 +105,27 @@ def test_an_io_breakpoint_and_instruction_steps_from_the_page(lab_server):
         start = len(page.screen)
         await page.type("Set.Up.Robot\r")                    # after 1000 LOAD (above)
         await page.until(r"Set.Up.Robot  ok", start)
-        await page.ws.send_str(json.dumps({"t": "iobreak", "address": "170441"}))
+        await page.send({"t": "iobreak", "address": "170441"})
         await page.until(r"170441 is not an even I/O page address", start)
-        await page.ws.send_str(json.dumps({"t": "iobreak", "address": "170460"}))
+        await page.send({"t": "iobreak", "address": "170460"})
         await page.until(r"not set: IOBREAK: no device answers at 170460[\s\S]*cont", start)
-        ticking = await until_message(page, lambda m: m["t"] == "data" and m["panel"] and any(
+        ticking = await page.message(lambda m: m["t"] == "data" and m["panel"] and any(
             v["vector"] == "100" and v["per_s"] == 60.0 for v in m["panel"].get("interrupts", [])))
-        await until_message(page, lambda m: m["t"] == "data" and "Desire.Pos" in m["servo"])
+        await page.message(lambda m: m["t"] == "data" and "Desire.Pos" in m["servo"])
         # the lab has read the loaded dictionary (the servo's words are found in it)
-        await page.ws.send_str(json.dumps({"t": "iobreak", "address": "170440"}))
-        history = await until_message(page, lambda m: m["t"] == "history")
+        await page.send({"t": "iobreak", "address": "170440"})
+        history = await page.message(lambda m: m["t"] == "history")
         pcs = []
         for _ in range(2):
-            await page.ws.send_str(json.dumps({"t": "stepi"}))
-            stepped = await until_message(page, lambda m: m["t"] == "data" and m["panel"] and
+            await page.send({"t": "stepi"})
+            stepped = await page.message(lambda m: m["t"] == "data" and m["panel"] and
                                           m["panel"]["registers"][7]["value"] not in pcs)
             pcs.append(stepped["panel"]["registers"][7]["value"])
         mark = len(page.screen)                              # Step pressed twice at once:
-        await page.ws.send_str(json.dumps({"t": "stepi"}))   # the two take turns at sim>
-        await page.ws.send_str(json.dumps({"t": "stepi"}))
+        await page.send({"t": "stepi"})   # the two take turns at sim>
+        await page.send({"t": "stepi"})
         await page.until(r"Step expired[\s\S]*Step expired", mark)
-        await page.ws.send_str(json.dumps({"t": "nobreak"}))
+        await page.send({"t": "nobreak"})
         await page.until(r"set lab noiobreak[\s\S]*cont", start)
         mark = len(page.screen)
         await page.type("2 3 + .\r")

@@ -4,12 +4,10 @@ outside the disk, a bad field, an exercise that is not one of the five are
 refused with a reason; an exercise's check runs its commands and sends what they
 printed; a second click while one runs is refused."""
 import asyncio
-import json
-
-import aiohttp
 
 from harness.commands.lab import block_listing
 from harness.lab import lesson_checks
+from harness.lab.page_client import Page
 from harness.lab.program_pane import ProgramPane, block_lines
 from harness.machine.build import PRISTINE_DISK
 
@@ -20,20 +18,13 @@ def talk(server, messages, wanted):
     """Send `messages`, collect the answers whose kind is in `wanted` until one of
     each message has its answer (len(messages) answers)."""
     async def run():
-        async with aiohttp.ClientSession() as http:
-            async with http.ws_connect(f"http://127.0.0.1:{server.port}/ws?token={server.token}",
-                                       headers={"Origin": f"http://127.0.0.1:{server.port}"}) as ws:
-                for message in messages:
-                    await ws.send_str(json.dumps(message))
-                answers, deadline = [], asyncio.get_running_loop().time() + TIMEOUT
-                while len(answers) < len(messages):     # data messages come all the time:
-                    left = deadline - asyncio.get_running_loop().time()   # the deadline is
-                    assert left > 0, f"answers {answers} in {TIMEOUT} s"  # the loop's
-                    msg = await ws.receive(timeout=left)
-                    m = json.loads(msg.data)
-                    if m["t"] in wanted:
-                        answers.append(m)
-                return answers
+        page = await Page.open(server)
+        try:
+            for message in messages:
+                await page.send(message)
+            return [await page.until(lambda m: m["t"] in wanted, TIMEOUT) for _ in messages]
+        finally:
+            await page.close()
     return asyncio.run(run())
 
 

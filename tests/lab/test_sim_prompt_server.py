@@ -4,48 +4,45 @@ saying why and does nothing (the files it would write are not written, the shell
 command it would run does not run); the allowed ones, abbreviated as SIMH
 abbreviates, run; QUIT from the page leaves the lab through its FLUSH."""
 import asyncio
-import json
 import re
 
-import aiohttp
 import pytest
+
+from harness.lab.page_client import Page as Client
 
 TIMEOUT = 20
 
 
 class Page:
-    """A websocket client typing as the page does and reading its console."""
+    """The page's console as these tests use it: keys sent without waiting for their
+    answer, the console read until a pattern shows. harness/lab/page_client.py's
+    client does the reading (each message checked against the protocol) and keeps
+    the deadline."""
 
-    def __init__(self, server, ws):
-        self.server, self.ws, self.screen = server, ws, ""
-        self.errors = []                # what the lab refused ("error" messages)
+    def __init__(self, client):
+        self.client = client
+
+    screen = property(lambda self: self.client.screen)
+
+    async def send(self, message):
+        await self.client.send(message)
 
     async def type(self, text):
-        await self.ws.send_str(json.dumps({"t": "key", "d": text}))
+        await self.send({"t": "key", "d": text})
+
+    async def message(self, wanted, timeout=TIMEOUT):
+        """The first message `wanted` accepts (the console kept on the way)."""
+        return await self.client.until(wanted, timeout)
 
     async def until(self, pattern, start=0):
-        """Read console output until `pattern` appears after `start`; the text. The
-        lab's data messages never stop coming, so the deadline is the loop's: a
-        receive's own timeout would never expire."""
+        """Read until `pattern` shows in the console after `start`; the text."""
         regex = re.compile(pattern)
-        loop = asyncio.get_running_loop()
-        deadline = loop.time() + TIMEOUT
-        while not regex.search(self.screen, start):
-            left = deadline - loop.time()
+        if not regex.search(self.screen, start):
             try:
-                if left <= 0:
-                    raise asyncio.TimeoutError
-                msg = await self.ws.receive(timeout=left)
-            except asyncio.TimeoutError:
-                raise AssertionError(f"no {pattern!r} in {TIMEOUT} s; refused: {self.errors}; "
-                                     f"console:\n{self.screen[-2000:]}") from None
-            if msg.type != aiohttp.WSMsgType.TEXT:
-                raise AssertionError(f"the socket closed; console:\n{self.screen[-2000:]}")
-            message = json.loads(msg.data)
-            if message["t"] in ("con", "hello"):
-                self.screen += message.get("d", message.get("con", ""))
-            elif message["t"] == "error":
-                self.errors.append(message["why"])
+                await self.message(lambda m: regex.search(self.screen, start))
+            except AssertionError as why:
+                refused = [m["why"] for m in self.client.messages if m["t"] == "error"]
+                raise AssertionError(f"no {pattern!r}: {why}; refused: {refused}") from None
         return self.screen[start:]
 
     async def at_sim(self, line, answer):
@@ -57,15 +54,15 @@ class Page:
 
 def session(server, steps):
     async def run():
-        async with aiohttp.ClientSession() as http:
-            async with http.ws_connect(f"http://127.0.0.1:{server.port}/ws?token={server.token}",
-                                       headers={"Origin": f"http://127.0.0.1:{server.port}"}) as ws:
-                page = Page(server, ws)
-                await page.until(r"ok\r\n")          # the FORTH is up
-                # the page before this one may hold the keyboard still (its close not yet
-                # handled): its keys would be refused. One socket's messages go in order.
-                await ws.send_str(json.dumps({"t": "take"}))
-                return await steps(page)
+        page = Page(await Client.open(server))
+        try:
+            await page.until(r"ok\r\n")              # the FORTH is up
+            # the page before this one may hold the keyboard still (its close not yet
+            # handled): its keys would be refused. One socket's messages go in order.
+            await page.send({"t": "take"})
+            return await steps(page)
+        finally:
+            await page.client.close()
     return asyncio.run(run())
 
 
