@@ -37,8 +37,8 @@ def ring_pieces(sym, text, head):
 
 
 def ring_image(sym, text, head):
-    """The LOAD image of ring_pieces(sym, text, head) and RXHEAD after them, its end
-    block last."""
+    """(the LOAD image of ring_pieces(sym, text, head) and RXHEAD after them, its
+    end block last; that RXHEAD)."""
     pieces, after = ring_pieces(sym, text, head)
     writes = pieces + [(sym["RXHEAD"], after.to_bytes(2, "little"))]
-    return b"".join(lda_block(a, d) for a, d in writes) + END
+    return b"".join(lda_block(a, d) for a, d in writes) + END, after

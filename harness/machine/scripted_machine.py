@@ -220,13 +220,14 @@ class ScriptedMachine(contextlib.AbstractContextManager):
         if any(not (32 <= ord(c) < 127 or c == "\t") for c in text):
             raise ScriptError("line holds a control or non-ASCII character")
         head = self._ring_head()
-        os.pwrite(self._feed_fd, ring_image(self.sym, text, head), 0)
+        image, after = ring_image(self.sym, text, head)
+        os.pwrite(self._feed_fd, image, 0)
         limit = self.line_limit if limit is None else limit
         # the ring and RXHEAD as feed_commands' deposits leave them, and the end of WAIT
         answer = self._run_for(limit, text, before=f"load {self._feed}\r{END_WAIT}\r",
                                extra_prompts=2)
         if not answer.stopped:   # back at QUERY: ACCEPT took the line and its CR
-            self._head = (head + len(text) + 1) & self.sym["RING-MASK"]
+            self._head = after
         return self._limited(answer, limit)
 
     def _ring_head(self):

@@ -52,5 +52,6 @@ def interrupt_writes(text, head):
                                        ("abc", 510), ("y" * 255, 0), ("z", 257)])
 def test_the_load_and_the_deposits_write_what_the_interrupt_would(text, head):
     expected = interrupt_writes(text, head)
-    assert loaded(ring_image(SYM, text, head)) == expected
+    image, after = ring_image(SYM, text, head)
+    assert loaded(image) == expected and after == (head + len(text) + 1) & SYM["RING-MASK"]
     assert deposited(feed_commands(SYM, text, head)) == expected
