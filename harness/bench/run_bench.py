@@ -14,7 +14,6 @@ import tempfile
 import time
 from pathlib import Path
 
-import pexpect
 
 from harness.analysis import regression
 from harness.controllers.scripted import run_five_file
@@ -22,6 +21,7 @@ from harness.machine.build import PDP11, ROOT, fresh_disk
 from harness.machine.script import parse
 from harness.machine.script_run import run_steps
 from harness.machine.scripted_machine import ScriptedMachine
+from harness.machine.pty_spawn import Spawn
 
 IDLE_SECONDS = 20.0
 
@@ -84,8 +84,8 @@ def idle_console_share(seconds=3.0, line=None):
         disk = fresh_disk(tmp)
         ini = Path(tmp) / "console.ini"
         ini.write_text(boot_script(disk, fast=True))
-        child = pexpect.spawn(str(PDP11), [str(ini)],
-                              timeout=30)
+        child = Spawn(str(PDP11), [str(ini)],
+                      timeout=30)
         try:
             child.expect(b" ok\r\n")
             if line:

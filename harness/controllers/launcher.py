@@ -22,7 +22,6 @@ import threading
 import time
 from pathlib import Path
 
-import pexpect
 
 from harness.controllers.boot_lines import MAIN_BOOT_LINES, axis_boot_lines
 from harness.controllers.bridge import ConsoleBridge
@@ -33,6 +32,7 @@ from harness.machine import pty_child, simh
 from harness.machine.build import (CONTROLLERS_DIR, KERNEL, KERNEL_1103, PDP11, PRISTINE_DISK,
                                     fresh_disk)
 from harness.machine.console_session import session
+from harness.machine.pty_spawn import Spawn
 
 STATUS = "status.json"       # the coordinator's status, for the lab's page of the five
 END_WAIT = 10                # wall seconds the 11/03s get to stop and QUIT at the end
@@ -73,7 +73,7 @@ class Launch:
             ini = directory / f"{name}.ini"
             ini.write_text(simh.boot_script(copy, axis_kernel, setup="".join(
                 f"{c}\n" for c in member_settings(name, self.coordinator.socket))))
-            child = pexpect.spawn(str(PDP11), [str(ini)], cwd=str(directory), timeout=None)
+            child = Spawn(str(PDP11), [str(ini)], cwd=str(directory), timeout=None)
             self.children[name] = child
             self.bridge.add(name, child)
             _boot_lines(self.bridge, name, axis_boot_lines(i) if boot_lines else [])

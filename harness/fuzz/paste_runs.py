@@ -19,6 +19,7 @@ from harness.lab.launch import LabProcess
 from harness.lab.page_client import Page
 from harness.machine import pty_child
 from harness.machine.build import ROOT, fresh_disk
+from harness.machine.pty_spawn import Spawn
 
 
 class PasteFailed(AssertionError):
@@ -28,10 +29,10 @@ class PasteFailed(AssertionError):
 def console(disk, fast, timeout=30, idle_speed=1):
     """`python -m harness console` on `disk`, booted to its prompt; fast: --fast, its
     waits at `idle_speed` times the 11/23's pace."""
-    child = pexpect.spawn(sys.executable, ["-m", "harness", "console", "--disk", str(disk)]
-                          + (["--fast", "--idle-speed", str(idle_speed)] if fast else []),
-                          cwd=str(ROOT), timeout=timeout, encoding="latin-1",
-                          dimensions=(24, 200))
+    child = Spawn(sys.executable, ["-m", "harness", "console", "--disk", str(disk)]
+                  + (["--fast", "--idle-speed", str(idle_speed)] if fast else []),
+                  cwd=str(ROOT), timeout=timeout, encoding="latin-1",
+                  dimensions=(24, 200))
     child.delaybeforesend = child.delayafterread = None
     child.expect(r"blocks 0-\d+\.\r\n ok\r\n")
     return child

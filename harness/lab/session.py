@@ -20,7 +20,6 @@ import sys
 import tempfile
 from pathlib import Path
 
-import pexpect
 
 from harness.lab.feed import Lines
 from harness.lab.sim_prompt_guard import SimPromptGuard, prompt_termios
@@ -32,6 +31,7 @@ from harness.machine.console_session import (RACK_OFF, bye_halt, leave, say,
 from harness.machine.console_watch import SIM_PROMPT, Leave, LineWatcher
 from harness.machine.key_feed import KeyFeed, shown
 from harness.machine.simh_command import RUNS, simh_command
+from harness.machine.pty_spawn import Spawn
 
 SPEEDS = {"real": 1, "x10": 10, "full": 0}
 READ_CHUNK = 1 << 16
@@ -115,9 +115,9 @@ class Simulator:
         ini = tmp / "lab.ini"
         ini.write_text(boot_script(self.disk, lab_fifo, SPEEDS[self.speed],
                                    read_only=self.read_only))
-        self.child = pexpect.spawn(str(self.simulator), [str(ini)], timeout=None,
-                                   dimensions=(24, 80), cwd=str(ROOT),
-                                   preexec_fn=prompt_termios)
+        self.child = Spawn(str(self.simulator), [str(ini)], timeout=None,
+                           dimensions=(24, 80), cwd=str(ROOT),
+                           tty_setup=prompt_termios)
         self.child.delaybeforesend = None
         self.feed = KeyFeed(self.child.child_fd, self.child.pid, limit=QUEUE_LIMIT)
         self.keys_waiting = asyncio.Event()

@@ -34,6 +34,7 @@ from harness.machine.console_halt import HaltWatcher
 from harness.machine.console_watch import Leave, LineWatcher
 from harness.machine.kernel_layout import KernelMapError, read_kernel_map
 from harness.machine.key_feed import CONT_WAIT_S, KeyFeed, shown
+from harness.machine.pty_spawn import Spawn
 
 # the 11/23's pace (CLK RATE, 300K instructions/s) from the first instruction; SIMH's
 # SET THROTTLE cannot pace the kernel's WAIT (pdp11-devices/bus/kw11l.c)
@@ -364,8 +365,8 @@ def session(simulator, disk, trace=None, fast=False, kernel=KERNEL, busy_wait=BU
             print(f"[console] {note}")
         sys.stdout.flush()
         size = os.get_terminal_size() if sys.stdout.isatty() else os.terminal_size((80, 24))
-        child = pexpect.spawn(str(simulator), [str(ini)], timeout=None,
-                              dimensions=(size.lines, size.columns))
+        child = Spawn(str(simulator), [str(ini)], timeout=None,
+                      dimensions=(size.lines, size.columns))
         child.delaybeforesend = None
         watcher = LineWatcher(bye_halt(kernel))
         feed = KeyFeed(child.child_fd, child.pid)

@@ -23,6 +23,7 @@ from harness.machine import pty_child
 from harness.machine.build import KERNEL, ROOT  # noqa: F401
 from harness.machine.build import PDP11 as SIMULATOR
 from harness.machine.simh import boot_script
+from harness.machine.pty_spawn import Spawn
 
 OK = re.compile(r" (?:ok|compiled)\r\n")   # compiled: a definition or structure is open
 ERROR = re.compile(r"\r\nError: ([^\r\n]*)\r\n")
@@ -70,9 +71,9 @@ class Machine:
         self.disk = Path(disk) if disk else blank_disk(tmp / "rl0.dsk")
         ini = tmp / "boot.ini"
         ini.write_text(boot_script(self.disk, kernel, setup=IDLE_PACE + extra_commands))
-        self.child = pexpect.spawn(str(simulator), [str(ini)], cwd=str(ROOT),
-                                   encoding="latin-1", timeout=timeout,
-                                   dimensions=(24, 200))
+        self.child = Spawn(str(simulator), [str(ini)], cwd=str(ROOT),
+                           encoding="latin-1", timeout=timeout,
+                           dimensions=(24, 200))
         self.child.delaybeforesend = None  # pexpect would wait 50 ms per send
         self.child.delayafterread = None   # ... and 0.1 ms after each read: half a line's
                                            # wall time where a test types a thousand

@@ -33,6 +33,7 @@ from pathlib import Path
 import pexpect
 
 from harness.machine import pty_child
+from harness.machine.pty_spawn import Spawn
 from harness.machine.build import KERNEL, KERNEL_MAP, MACHINE_INI, PDP11, ROOT
 from harness.machine.kernel_layout import KernelMapError, read_kernel_map
 from harness.machine.ring_image import ring_image, ring_pieces
@@ -130,9 +131,9 @@ class ScriptedMachine(contextlib.AbstractContextManager):
                        + (f"break {self.cue:o}\n" if cue_breakpoint
                           else f"deposit cue pc {self.cue:o}\n"))
         # echo off: SIMH's commands are not echoed, so its output is all there is
-        self.child = pexpect.spawn(str(simulator), [str(ini)], cwd=str(cwd), echo=False,
-                                   encoding="latin-1", timeout=wall_timeout,
-                                   dimensions=(24, 200))
+        self.child = Spawn(str(simulator), [str(ini)], cwd=str(cwd), echo=False,
+                           encoding="latin-1", timeout=wall_timeout,
+                           dimensions=(24, 200))
         self.child.delaybeforesend = None
         self.child.delayafterread = None       # pexpect's default sleeps 0.1 ms a read
         self._expect_prompt("the boot script")

@@ -14,13 +14,14 @@ import pytest
 
 from harness.machine import pty_child
 from harness.machine.build import KERNEL_1103, PRISTINE_DISK, ROOT, fresh_disk
+from harness.machine.pty_spawn import Spawn
 
 pytestmark = pytest.mark.skipif(not KERNEL_1103.exists(), reason="no build/kernel-1103.lda")
 
 
 def harness(*args, cwd=ROOT):
-    child = pexpect.spawn(sys.executable, ["-m", "harness", *args], cwd=str(cwd),
-                          encoding="latin-1", timeout=60, dimensions=(24, 200))
+    child = Spawn(sys.executable, ["-m", "harness", *args], cwd=str(cwd),
+                  encoding="latin-1", timeout=60, dimensions=(24, 200))
     child.delaybeforesend = None
     return child
 

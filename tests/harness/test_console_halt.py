@@ -1,10 +1,10 @@
 """The console's hint when the PDP-11 stops by itself (harness/machine/console_halt.py)."""
-import pexpect
 
 from harness.machine.console_halt import HaltWatcher
 from harness.machine.kernel_layout import entry as kernel_entry
 from harness.machine.machine import SIMULATOR
 from harness.machine.build import KERNEL, MACHINE_INI
+from harness.machine.pty_spawn import Spawn
 
 
 def test_a_halt_gets_a_hint_in_pieces():
@@ -32,7 +32,7 @@ def test_the_real_halt_line_matches(tmp_path):
     """What SIMH prints for a FORTH whose kernel was zeroed: the hint follows."""
     ini = tmp_path / "h.ini"
     ini.write_text(f"do {MACHINE_INI}\nload {KERNEL}\ngo\n")
-    child = pexpect.spawn(str(SIMULATOR), [str(ini)], timeout=20)
+    child = Spawn(str(SIMULATOR), [str(ini)], timeout=20)
     try:
         child.expect(b" ok\r\n")
         child.send(b"1024 2000 0 FILL\r")   # from 2000 octal: the kernel's code (below it: refused)

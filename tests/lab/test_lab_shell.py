@@ -10,6 +10,7 @@ import pexpect
 from harness.fuzz.paste_text import check_line, definitions, expected
 from harness.machine import pty_child
 from harness.machine.build import ROOT, fresh_disk
+from harness.machine.pty_spawn import Spawn
 from tests.run.common import outlived
 
 
@@ -17,9 +18,9 @@ def lab_in_a_terminal(tmp_path):
     """python -m harness lab on a pty (a shell's terminal), booted to the prompt;
     the child and its disk."""
     disk = fresh_disk(tmp_path)
-    child = pexpect.spawn(sys.executable, ["-m", "harness", "lab", "--port", "0",
-                                           "--speed", "full", "--disk", str(disk)],
-                          cwd=str(ROOT), timeout=30, encoding="latin-1")
+    child = Spawn(sys.executable, ["-m", "harness", "lab", "--port", "0",
+                                   "--speed", "full", "--disk", str(disk)],
+                  cwd=str(ROOT), timeout=30, encoding="latin-1")
     child.expect(r"blocks 0-\d+\.\r+\n ok")
     return child, disk
 

@@ -13,6 +13,7 @@ import pytest
 
 from harness.machine import pty_child
 from harness.machine.build import KERNEL, PDP11 as SIMULATOR, PRISTINE_DISK as PRISTINE, ROOT  # noqa: F401 (shared)
+from harness.machine.pty_spawn import Spawn
 
 needs_build = pytest.mark.skipif(
     not all(p.is_file() for p in (PRISTINE, SIMULATOR, KERNEL)),
@@ -43,8 +44,8 @@ def failing_fsync_library():
 def spawn(program, *args, **options):
     """pexpect.spawn in the repository, without pexpect's fixed pauses (50 ms before
     each send, 0.1 ms after each read; the one at the close: ended())."""
-    child = pexpect.spawn(str(program), [str(a) for a in args], cwd=str(ROOT),
-                          **{"timeout": 30, **options})
+    child = Spawn(str(program), [str(a) for a in args], cwd=str(ROOT),
+                  **{"timeout": 30, **options})
     child.delaybeforesend = child.delayafterread = None
     return child
 
