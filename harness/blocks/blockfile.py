@@ -6,6 +6,7 @@ lines of at most 64 printable ASCII characters; missing lines are blank.  Packin
 pads every line with spaces; unpacking strips the trailing spaces again, so a text
 file in canonical form survives text -> block -> text unchanged.
 """
+import re
 from dataclasses import dataclass
 
 LINES = 16
@@ -108,8 +109,17 @@ def is_blank(data):
     return data.strip(b" ") == b"" or data.strip(b"\0") == b""
 
 
+# a line whose last column is the ) of a ( or .( comment opened on it
+_COMMENT_CLOSED_AT_END = re.compile(rb"(?:^|\s)\.?\(\s[^)]*\)$")
+
+
 def fused_line_ends(data):
     """Line numbers n where line n fills all 64 columns and line n+1 starts with a
-    non-blank: LOAD reads the block as one string, so the two words become one."""
+    non-blank: LOAD reads the block as one string, so the two words become one.
+    Not when line n ends with the ) closing a comment opened on it: the comment
+    reads up to its ) and no further, so line n+1's first word is a word of its own."""
+    def line(n):
+        return data[n * WIDTH:(n + 1) * WIDTH]
     return [n for n in range(LINES - 1)
-            if data[n * WIDTH + WIDTH - 1] != 32 and data[(n + 1) * WIDTH] != 32]
+            if line(n)[-1] != 32 and line(n + 1)[0] != 32
+            and not _COMMENT_CLOSED_AT_END.search(line(n))]

@@ -85,3 +85,14 @@ def test_binary_block_is_refused_with_its_line():
 def test_a_full_line_followed_by_a_word_is_detected():
     block = text_to_block("x" * 64 + "\nDUP\n" + " " * 64 + "\n DROP\n")
     assert fused_line_ends(block) == [0]
+
+
+def test_a_full_line_ending_its_own_comment_does_not_run_into_the_next():
+    title = "( " + "t" * 61 + ")"                      # line 0 of blocks 1070-1078
+    assert fused_line_ends(text_to_block(title + "\n( next line)\n")) == []
+    assert fused_line_ends(text_to_block(".( " + "t" * 60 + ")\nCR\n")) == []
+    # a ) with no comment opened before it on its line: reported (a comment begun on
+    # an earlier line is not followed back; the warning errs on the side of saying it)
+    assert fused_line_ends(text_to_block("x" * 63 + ")\nDUP\n")) == [0]
+    assert fused_line_ends(text_to_block("( a\n" + "x" * 63 + ")\nDUP\n")) == [1]
+    assert fused_line_ends(text_to_block("(x" + "t" * 61 + ")\nDUP\n")) == [0]
