@@ -12,7 +12,8 @@ every module still runs whole on one worker, its module fixtures once.
 The modules of a SHARED_START group go to one worker together, one after the
 other: each worker that draws a figure pays matplotlib's import and its first
 figure (the fonts), about a second of CPU, and three workers would pay it three
-times."""
+times; a session fixture two modules read (the ASN's trials, some 2 CPU-s) runs
+once on one worker, twice on two."""
 import json
 from collections import Counter, defaultdict
 
@@ -24,7 +25,9 @@ DURATIONS = BUILD / "test-durations.json"
 DEFAULT_TEST_S = 0.1
 SHARED_START = {"matplotlib": ("tests/harness/test_cli_plot_timing.py",
                                "tests/harness/test_path_plots.py",
-                               "tests/harness/test_plots.py")}
+                               "tests/harness/test_plots.py"),
+                "asn": ("tests/learning/test_asn_robot.py",          # conftest's `learned`
+                        "tests/learning/test_asn_script.py")}
 GROUP_OF = {module: group for group, modules in SHARED_START.items() for module in modules}
 
 

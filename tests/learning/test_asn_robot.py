@@ -3,7 +3,8 @@ emulated robot with the printed servo: they load after 1000 LOAD, the Python
 model chooses the FORTH's action at each of the first 200 steps and ends
 with its weights, the weights survive leaving the FORTH, misuse is refused
 with a message, and python -m harness listing lists the blocks. The model's
-test and the weights' read one run of the trials (conftest's `learned`).
+test and the weights' read one run of the trials (conftest's `learned`,
+whose start test_asn_script.py's check reads too).
 (test_asn_script.py: the same script gives the same trials.csv; make
 asn-runs checks all of a 50-trial run, and the learning itself.)"""
 import subprocess
