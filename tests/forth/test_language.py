@@ -184,14 +184,19 @@ CODE Tick Save-Regs TICKS @# INC, Restore-Regs RTI,
     assert forth.send("100O @ 1100O = .") == "-1 "
 
 
+def kernel_cell(name):
+    """The address of one of the kernel's variables (build/kernel.map)."""
+    return read_kernel_map(KERNEL.with_suffix(".map"))[name]
+
+
 def test_typed_ahead_beyond_the_ring_arrives_whole(forth):
     """More than 511 characters typed while a word runs: the receive interrupt sends
     XOFF before the ring is full, the terminal side waits, and every line arrives
     (issue 23); nothing is reported lost."""
-    # long enough (18M instructions, ~0.2 s of host time) that the host has written
-    # every character before the word ends, even on a loaded machine
-    forth.send(": BUSY2 100 0 DO 30000 0 DO LOOP LOOP ;")
-    forth.child.send("BUSY2\r" + "".join(f"{n} DROP {'1 DROP ' * 10}\r" for n in range(9)))
+    # the word runs until XOFF has gone out (XOFF-HELD set), however late the host's
+    # characters come; then KEY drains the ring, sends XON, and the rest arrive
+    forth.send(f": UNTIL-XOFF BEGIN {kernel_cell('XOFF-HELD')} @ UNTIL ;")
+    forth.child.send("UNTIL-XOFF\r" + "".join(f"{n} DROP {'1 DROP ' * 10}\r" for n in range(9)))
     for n in range(9):
         forth.child.expect(f"{n} DROP (1 DROP ){{10}} +ok\r\n")
     assert "lost" not in forth.child.before
@@ -202,8 +207,9 @@ def test_ring_overflow_is_reported_when_the_terminal_ignores_xoff(forth):
     """RXLOST stays as the guard: with XOFF-HELD set (as if XOFF had gone out and the
     terminal kept sending), the ring fills, the excess is dropped and the loss is
     reported at the next line."""
-    xoff_held = read_kernel_map(KERNEL.with_suffix(".map"))["XOFF-HELD"]
-    forth.child.send(f"1 {xoff_held} ! BUSY2\r" + ("1 DROP " * 11 + "\r") * 9)
+    # the word runs until a character has been dropped
+    forth.send(f": UNTIL-LOST BEGIN {kernel_cell('RXLOST')} @ UNTIL ;")
+    forth.child.send(f"1 {kernel_cell('XOFF-HELD')} ! UNTIL-LOST\r" + ("1 DROP " * 11 + "\r") * 9)
     forth.child.expect("characters lost: typed too far ahead")
     forth.child.send("\r")  # ends whatever line the ring cut short
     forth.child.send(".( in step)\r")
