@@ -16,8 +16,13 @@ def listing():
     return make_listing()
 
 
-def test_every_line_of_every_block_is_listed(listing):
-    text = listing.format()
+@pytest.fixture(scope="module")
+def text(listing):
+    """The listing as it is printed, formatted once for the tests that read it."""
+    return listing.format()
+
+
+def test_every_line_of_every_block_is_listed(text):
     for blk in range(1000, 1013):
         source = (ROOT / "blocks" / f"{blk}.txt").read_text().splitlines()
         section = text.split(f"Block {blk}\n", 1)[1].split("\nBlock ", 1)[0]
@@ -66,18 +71,17 @@ def test_cli_bad_blocks_is_a_usage_error(tmp_path, cli, blocks):
     assert not out.exists()
 
 
-def test_operands_are_named(listing):
-    text = listing.format()
+def test_operands_are_named(text):
     assert "MOV Desire.Pos(R1),R2" in text             # an ARRAY's body
     assert "MOV R0,@#CntOut  ; DRV11 CSR" in text      # the constant the source used
     assert "CMP R2,@#Range" in text                    # a VAR's body
     assert "MOV 0-Vel(R1),VelOut(R1)  ; AAV11 DAC x" in text
 
 
-def test_assembler_words_named_and_headers_not(listing):
+def test_assembler_words_named_and_headers_not(listing, text):
     words = [w for s in listing.spans[(1002, 7)] for w in s.words]   # W Desire.Pos T I) MOV,
     assert [listing.names.get(w) for w in words] == ["W", "Desire.Pos", "T", "I)", "MOV,"]
-    section = listing.format().split("Block 1002\n", 1)[1]
+    section = text.split("Block 1002\n", 1)[1]
     header_row = [l for l in section.splitlines() if l.startswith("     ")][1]
     assert header_row.split()[-1] == "DOCOL"      # the code field's handler, nothing else
 
