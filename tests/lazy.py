@@ -1,7 +1,8 @@
 """A module a test module needs only while its tests run, imported then, not when
 pytest collects it: each of make test's workers collects every test module, so an
-import at the top (numpy, aiohttp, pdpy11: a tenth of a second or more each) is
-paid once per worker, whichever worker runs the tests.
+import at the top (numpy, aiohttp: a tenth of a second or more each) is paid by
+every worker, whichever runs the tests; imported at the test, only by the workers
+that run one (nothing is saved for a module every worker's tests need anyway).
 
     controllers_runs = lazy("harness.figures.controllers_runs")
     ...
