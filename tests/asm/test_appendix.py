@@ -4,7 +4,10 @@ assembled by pdpy11: the destination-first reading of the 1983 code, checked
 on the real thing, with its nesting and branch distances."""
 from pathlib import Path
 
-from tests.asm.asmcheck import corpus, host_asm, pdpy11_ref, simh_disasm
+from tests.asm.asmcheck import corpus, host_asm, simh_disasm
+from tests.lazy import lazy
+
+pdpy11_ref = lazy("tests.asm.asmcheck.pdpy11_ref")   # pdpy11, at the test
 
 APPENDIX = Path(__file__).resolve().parent / "appendix"
 

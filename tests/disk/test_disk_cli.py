@@ -172,7 +172,7 @@ def test_export_of_a_binary_block_names_it(tmp_path):
 def test_usage_errors_and_help():
     result = harness_process("disk")
     assert result.returncode == 2 and "ACTION" in result.stderr
-    result = harness_process("--help")
+    result = harness("--help")
     assert result.returncode == 0 and "disk" in result.stdout
     assert harness("disk", "export", "--help").stdout.count("--force") >= 1
 

@@ -16,8 +16,13 @@ def listing():
     return make_listing()
 
 
-def test_every_line_of_every_block_is_listed(listing):
-    text = listing.format()
+@pytest.fixture(scope="module")
+def text(listing):
+    """The listing as it is printed, formatted once for the tests that read it."""
+    return listing.format()
+
+
+def test_every_line_of_every_block_is_listed(text):
     for blk in range(1000, 1013):
         source = (ROOT / "blocks" / f"{blk}.txt").read_text().splitlines()
         section = text.split(f"Block {blk}\n", 1)[1].split("\nBlock ", 1)[0]
@@ -53,6 +58,7 @@ def test_headers_and_names_of_new_words(listing):
     headers = [s.header for ss in listing.spans.values() for s in ss if s.header]
     assert headers[:2] == ["Desire.Pos", "State"]
     assert "Interrupt.Servo" in headers and "Move.Complete?" in headers
+    assert "Read.Counter" in headers                  # block 1009's
     assert "Abs.Move.Single" in listing.names.values()
 
 
@@ -66,38 +72,42 @@ def test_cli_bad_blocks_is_a_usage_error(tmp_path, cli, blocks):
     assert not out.exists()
 
 
-def test_operands_are_named(listing):
-    text = listing.format()
+def test_operands_are_named(text):
     assert "MOV Desire.Pos(R1),R2" in text             # an ARRAY's body
     assert "MOV R0,@#CntOut  ; DRV11 CSR" in text      # the constant the source used
     assert "CMP R2,@#Range" in text                    # a VAR's body
     assert "MOV 0-Vel(R1),VelOut(R1)  ; AAV11 DAC x" in text
 
 
-def test_assembler_words_named_and_headers_not(listing):
+def test_assembler_words_named_and_headers_not(listing, text):
     words = [w for s in listing.spans[(1002, 7)] for w in s.words]   # W Desire.Pos T I) MOV,
     assert [listing.names.get(w) for w in words] == ["W", "Desire.Pos", "T", "I)", "MOV,"]
-    section = listing.format().split("Block 1002\n", 1)[1]
+    section = text.split("Block 1002\n", 1)[1]
     header_row = [l for l in section.splitlines() if l.startswith("     ")][1]
     assert header_row.split()[-1] == "DOCOL"      # the code field's handler, nothing else
 
 
-def test_blocks_beyond_the_appendix_are_loaded_by_chain():
-    text = make_listing(1030, 1031).format()
-    assert text.startswith("Block 1030\n") and "Block 1031\n" in text
-    assert "header of Ramp.Servo" in text and "Block 1012" not in text
-
-
-def test_cli_writes_one_block(tmp_path):
-    """The command line's own start: a real `python -m harness` (the other tests
-    call it in this process, the `cli` fixture)."""
-    out = tmp_path / "b.lst"
-    r = subprocess.run([sys.executable, "-m", "harness", "listing", "--blocks", "1009",
+@pytest.fixture(scope="module")
+def beyond(tmp_path_factory):
+    """The command line's own start, a real `python -m harness listing --blocks
+    1030-1031 --out FILE` (the other tests call it in this process, the `cli`
+    fixture): (its result, the listing it wrote)."""
+    out = tmp_path_factory.mktemp("beyond") / "b.lst"
+    r = subprocess.run([sys.executable, "-m", "harness", "listing", "--blocks", "1030-1031",
                         "--out", str(out)], cwd=ROOT, capture_output=True, text=True)
+    return r, out.read_text() if out.exists() else ""
+
+
+def test_cli_writes_the_blocks_asked_for(beyond):
+    r, text = beyond
     assert r.returncode == 0, r.stderr
-    text = out.read_text()
-    assert text.startswith("Block 1009\n") and "header of Read.Counter" in text
-    assert "Block 1010" not in text
+    assert text.startswith("Block 1030\n")
+    assert "Block 1012" not in text           # loaded first (1000 LOAD), not listed
+
+
+def test_blocks_beyond_the_appendix_are_loaded_by_chain(beyond):
+    _, text = beyond
+    assert "Block 1031\n" in text and "header of Ramp.Servo" in text
 
 
 def test_blocks_that_need_others_first_say_so_and_take_load(tmp_path, cli):

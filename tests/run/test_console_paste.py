@@ -4,22 +4,25 @@ character pastes, at both paces and into the lab page too, are make fuzz's
 (harness/fuzz/paste_runs.py)."""
 import shutil
 
-from harness.fuzz.paste_runs import console, console_paste
 from harness.fuzz.paste_text import check_line, definitions, expected
+from tests.lazy import lazy
 from tests.run.common import IDLE_SPEED, PRISTINE, ended, harness_console, needs_build
+
+paste_runs = lazy("harness.fuzz.paste_runs")    # aiohttp (its lab half), at the test
 
 pytestmark = needs_build
 
 
 def test_a_paste_of_1000_characters_arrives_whole(tmp_path):
-    seconds, n = console_paste(1000, True, tmp_path, idle_speed=100)  # raises when one is missing
+    # raises when one is missing
+    seconds, n = paste_runs.console_paste(1000, True, tmp_path, idle_speed=100)
     assert n == 19
 
 
 def paste_at_real_pace(tmp_path, chars):
     disk = tmp_path / "paste.dsk"
     shutil.copyfile(PRISTINE, disk)
-    child = console(disk, fast=False)
+    child = paste_runs.console(disk, fast=False)
     text, n = definitions(chars)
     child.send(text + check_line() + "\r")
     child.expect(r"definition 3  ok\r\n")                # the paste is under way
