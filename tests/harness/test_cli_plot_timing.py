@@ -37,9 +37,9 @@ def test_plot_writes_every_figure(servo_trace, tmp_path, cli):
 def test_plot_default_names_beside_the_trace(servo_trace, tmp_path, capsys):
     trace = tmp_path / "copy.csv"
     trace.write_bytes(servo_trace.read_bytes())
-    # one axis: the names are what is checked here, the figure's rows are test_plots.py's
-    assert main(["plot", str(trace), "--figure", "time", "--format", "png", "--axis", "X"]) == 0
-    assert capsys.readouterr().out.split() == [str(tmp_path / "copy-time.png")]
+    # one panel: the names are what is checked here, the figure's rows are test_plots.py's
+    assert main(["plot", str(trace), "--figure", "zero", "--format", "png", "--axis", "Y"]) == 0
+    assert capsys.readouterr().out.split() == [str(tmp_path / "copy-zero.png")]
 
 
 @pytest.mark.parametrize("args, message", [

@@ -113,7 +113,7 @@ def test_save_writes_valid_png_and_svg(plots, tr, tmp_path):
 
 
 def test_save_failure_leaves_nothing(plots, tr, tmp_path):
-    fig = plots.time_figure(tr, "X")
+    fig = plots.zero_figure(tr, "Y")           # one panel: the cheapest file to leave
     with pytest.raises(ValueError):
         plots.save_all([(fig, [tmp_path / "ok.png", tmp_path / "bad.xyz"])])
     assert list(tmp_path.iterdir()) == []
