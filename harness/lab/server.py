@@ -1,4 +1,4 @@
-"""The lab bench's web server (aiohttp): the page, its assets, one websocket.
+"""The lab bench's web server (web.py): the page, its assets, one websocket.
 
 The messages both ways are defined once, in protocol.py; every message from a
 page is checked against it, and one that is not the protocol's gets one `error`
@@ -16,9 +16,7 @@ import signal
 import sys
 from pathlib import Path
 
-from aiohttp import WSMsgType, web
-
-from harness.lab import breakpoints, guard, lesson_checks, protocol, shell_terminal
+from harness.lab import breakpoints, guard, lesson_checks, protocol, shell_terminal, web
 from harness.lab.feed import lab_row, other_lines, plant_lines, plant_rows, thin, words_of
 from harness.lab.front_panel import PANEL_WORDS, WordIndex
 from harness.lab.panel_feed import PanelFeed
@@ -231,7 +229,7 @@ class Lab:
         async def send():
             try:
                 await ws.send_str(text)
-            except ConnectionError:        # aiohttp's ClientConnectionResetError is one
+            except ConnectionError:        # web.py's ConnectionResetError is one
                 pass
         if not ws.closed:
             task = asyncio.ensure_future(send())
@@ -432,43 +430,39 @@ def news(rows, state, sent):
 
 
 def make_app(lab, token, port_of):
-    """The aiohttp application; port_of() gives the port it listens on."""
+    """The server's handler (web.Server); port_of() gives the port it listens on."""
 
     def check(request, websocket=False):
         why = guard.refusal(request.host, request.query.get("token") if websocket else None,
-                            token, port_of(), request.headers.get("Origin"), websocket)
+                            token, port_of(), request.headers.get("origin"), websocket)
         if why:
-            raise web.HTTPForbidden(text=f"lab: {why}\n")
+            raise web.Forbidden(f"lab: {why}\n")
 
     async def page(request):
         check(request)
-        response = web.FileResponse(STATIC / "lab.html")
-        response.headers["Cache-Control"] = "no-store"
-        return response
+        return web.Response.file(STATIC / "lab.html", [("Cache-Control", "no-store")])
 
-    async def asset(request):
+    async def asset(request, name):
         check(request)
-        name = request.match_info["name"]
         path = STATIC / name if name in {p.name for p in STATIC.iterdir()} else None
         if name in VENDOR:
             path = NODE_MODULES / VENDOR[name]
         if path is None or not path.is_file():
-            raise web.HTTPNotFound(text=f"lab: no asset {name} (run make lab-assets)\n")
-        return web.FileResponse(path)
+            raise web.NotFound(f"lab: no asset {name} (run make lab-assets)\n")
+        return web.Response.file(path)
 
     async def socket(request):
         check(request, websocket=True)
-        ws = web.WebSocketResponse(heartbeat=20)   # aiohttp's 4 MB at most; protocol.py less
-        await ws.prepare(request)
+        ws = await request.websocket()   # 4 MB at most a message (web.py); protocol.py less
         lab.opened += 1
         lab.pages[ws] = f"page {lab.opened}"
         try:
             await ws.send_str(json.dumps(lab.hello(ws)))
             lab.sent = None               # the next frame brings it the servo's words
             async for msg in ws:
-                if msg.type == WSMsgType.TEXT:
+                if msg.type == web.TEXT:
                     lab.on_text(ws, msg.data)
-                elif msg.type == WSMsgType.BINARY:
+                else:
                     lab.tell(ws, {"t": "error", "why": "binary messages are not the lab's"})
         except ConnectionError:           # the page left before its hello went out
             pass
@@ -476,12 +470,20 @@ def make_app(lab, token, port_of):
             lab.pages.pop(ws, None)
             lab.listings.forget(ws)
             lab.release(ws)
-        return ws
 
-    app = web.Application()
-    app.add_routes([web.get("/", page), web.get("/ws", socket),
-                    web.get("/assets/{name}", asset)])
-    return app
+    async def handle(request):
+        if request.method not in ("GET", "HEAD"):
+            raise web.Refused(f"lab: {request.method} is not the lab's\n", 405)
+        if request.path == "/":
+            return await page(request)
+        if request.path == "/ws":
+            return await socket(request)
+        folder, _, name = request.path.rpartition("/")
+        if folder == "/assets" and name:
+            return await asset(request, name)
+        raise web.NotFound("lab: not found\n")
+
+    return handle
 
 
 def deaf_to_late_interrupts(loop):
@@ -498,17 +500,10 @@ async def serve(simulator, disk, symbols, port, speed, announce, read_only=False
     and the disk detached, None if the simulator exited by itself."""
     token = guard.new_token()
     lab = Lab(simulator, disk, symbols, speed, read_only, lister)
-    runner = None
-
-    def port_of():
-        return runner.addresses[0][1]
-
-    runner = web.AppRunner(make_app(lab, token, port_of), access_log=None)
-    await runner.setup()
-    site = web.TCPSite(runner, "127.0.0.1", port)
-    await site.start()
+    server = web.Server(make_app(lab, token, lambda: server.port))
+    await server.start("127.0.0.1", port)
     lab.sim.start()
-    announce(f"http://127.0.0.1:{port_of()}/?token={token}")
+    announce(f"http://127.0.0.1:{server.port}/?token={token}")
     loop = asyncio.get_running_loop()
     shell = shell_terminal.attach(loop, lab.shell_keys)
     if shell:
@@ -527,7 +522,7 @@ async def serve(simulator, disk, symbols, port, speed, announce, read_only=False
             task.cancel()
         for ws in list(lab.pages):                # else cleanup waits for the pages to go
             await ws.close()
-        await runner.cleanup()
+        await server.stop()
         if shell:
             shell[1]()
     return lab.safe
