@@ -4,7 +4,6 @@ import argparse
 import asyncio
 from pathlib import Path
 
-from harness.analysis.listing import ListingError, make_listing
 from harness.blocks.disk import DiskError
 from harness.commands.console import ConsoleError, working_disk
 from harness.lab.server import NODE_MODULES, serve
@@ -73,7 +72,9 @@ def block_listing(image, block):
     its 16 lines the rows of what it laid down}, and None; or None and why. A block
     of the appendix is listed with the others (the listing's runs load them all
     anyway), so following 1000 LOAD takes one listing, not thirteen; when that
-    fails (a user's disk whose chain differs), the block alone."""
+    fails (a user's disk whose chain differs), the block alone. Imported here: a lab
+    that never shows a listing does not pay for the listing's modules at its start."""
+    from harness.analysis.listing import ListingError, make_listing
     ranges = [APPENDIX] if APPENDIX[0] <= block <= APPENDIX[1] else []
     for first, last in ranges + [(block, block)]:
         try:

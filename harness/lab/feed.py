@@ -89,6 +89,25 @@ def lab_row(line):
     return LabRow(fields[0], fields[1:])
 
 
+class WordRows:
+    """W rows' words, decoded again only when they differ from the previous row's:
+    600 rows a wall second at x10, and while the FORTH waits at its prompt the
+    words stand still tick after tick (decoding the servo's 29 was most of what an
+    idle lab cost)."""
+
+    def __init__(self):
+        self.raw, self.words = None, []
+
+    def read(self, line):
+        """A W row's whole line (bytes) -> (time_s, tick, [words]); the same list
+        (object) while the words repeat."""
+        fields = line.split(b",", 3)
+        raw = fields[3] if len(fields) > 3 else b""
+        if raw != self.raw:
+            self.raw, self.words = raw, [int(w) for w in raw.split(b",")] if raw else []
+        return float(fields[1]), int(fields[2]), self.words
+
+
 def words_of(row):
     """W row -> (time_s, tick, [words]); M row -> (address, [words])."""
     if row.kind == "W":

@@ -17,7 +17,8 @@ import sys
 from pathlib import Path
 
 from harness.lab import breakpoints, guard, lesson_checks, protocol, shell_terminal, web
-from harness.lab.feed import lab_row, other_lines, plant_lines, plant_rows, thin, words_of
+from harness.lab.feed import (WordRows, lab_row, other_lines, plant_lines, plant_rows, thin,
+                              words_of)
 from harness.lab.front_panel import PANEL_WORDS, WordIndex
 from harness.lab.panel_feed import PanelFeed
 from harness.lab.program_pane import LatestQuestion, ProgramPane
@@ -79,6 +80,7 @@ class Lab:
         self.status = {"time": 0.0, "tick": 0, "state": "run", "speed": speed, "power": "off",
                        "waiting": 0}
         self.servo = {}
+        self.word_rows = WordRows()
         self.ticks = WordHistory(20 * TICKS_PER_FRAME)   # the words' changes, for the scope
         self.sent = None                 # the status and servo words the pages last had
         self.done = asyncio.Event()
@@ -173,24 +175,28 @@ class Lab:
             self.rows += plant_rows(plant_lines(block))
             del self.rows[:-20 * ROWS_PER_FRAME]     # a page that cannot keep up skips
         for line in other_lines(block):
-            if line.partition(b",")[0] in FRONT_PANEL_ROWS:
+            if line.startswith(b"W,"):
+                self.tick_words(*self.word_rows.read(line))
+            elif line.partition(b",")[0] in FRONT_PANEL_ROWS:
                 self.front.add(line)
             else:
                 row = lab_row(line)
                 if row:                              # not ",..."
                     self.device_row(row)
 
+    def tick_words(self, time, tick, words):
+        """A W row: the watched words at a tick."""
+        self.status["time"], self.status["tick"] = time, tick
+        servo = self.watch.values(words)
+        if servo is not self.servo:          # else the same words: no change to keep
+            self.servo = servo
+            self.ticks.add(time, servo)
+        hint = self.rack_hint.update(self.status["power"], time, self.servo)
+        if hint:
+            self.on_console(f"\r\n{hint}\r\n".encode())
+
     def device_row(self, row):
-        if row.kind == "W":
-            self.status["time"], self.status["tick"], words = words_of(row)
-            servo = self.watch.values(words)
-            if servo is not self.servo:          # else the same words: no change to keep
-                self.servo = servo
-                self.ticks.add(self.status["time"], servo)
-            hint = self.rack_hint.update(self.status["power"], self.status["time"], self.servo)
-            if hint:
-                self.on_console(f"\r\n{hint}\r\n".encode())
-        elif row.kind == "M":
+        if row.kind == "M":
             for command in self.watch.on_memory(*words_of(row)):
                 self.sim.command(command)
             if self.watch.settled():

@@ -1,8 +1,8 @@
 """The live streams' parsers (harness/lab/feed.py), on text as the devices write it."""
 import random
 
-from harness.lab.feed import Lines, lab_row, other_lines, plant_lines, plant_rows, thin, \
-    words_of
+from harness.lab.feed import Lines, WordRows, lab_row, other_lines, plant_lines, plant_rows, \
+    thin, words_of
 from harness.machine.plant_rows import AXES, AXIS, COLUMNS
 
 
@@ -78,3 +78,13 @@ def test_thin_keeps_every_axis_share():
     assert len(kept) == 100
     assert [sum(1 for r in kept if r[1] == a) for a in range(4)] == [25] * 4
     assert thin(rows[:10], 100) == rows[:10]
+
+
+def test_word_rows_decode_a_w_row_again_only_when_its_words_change():
+    rows = WordRows()
+    first = rows.read(b"W,0.050000,3,1,65535")
+    assert first == (0.05, 3, [1, 65535])
+    again = rows.read(b"W,0.066667,4,1,65535")
+    assert again[:2] == (0.066667, 4) and again[2] is first[2]
+    assert rows.read(b"W,0.083333,5,2,65535")[2] == [2, 65535]
+    assert rows.read(b"W,0.1,6") == (0.1, 6, [])
