@@ -42,6 +42,8 @@ VENDOR = {  # URL name -> file installed by `npm ci` (mk/lab.mk)
 FRAME_S = 1 / 30                 # how often plant rows and the servo's words go out
 FULL_SPEED_FRAME_S = 1 / 10      # at full speed: snapshots anyway, and Chromium's drawing
                                  # would take the simulator's core (docs/lab.md, cost)
+UNWATCHED_S = 0.1                # no page: how often what a frame would carry is dropped
+                                 # (an idle lab's wake-ups are most of its CPU)
 PROBE_S = 1.0                    # how often the dictionary's heads are looked at
 DICTIONARY_WAIT_S = 2.0          # a breakpoint's word not known: at most this for a probe
 ROWS_PER_FRAME = 400             # more than this (fast runs) are thinned per axis
@@ -58,7 +60,8 @@ class Lab:
 
     def __init__(self, simulator, disk, symbols, speed="real", read_only=False, lister=None):
         self.sim = Simulator(simulator, disk, self.on_console, self.on_lab, self.on_ended,
-                             speed, page=self.to_pages, read_only=read_only)
+                             speed, page=self.to_pages, read_only=read_only,
+                             watched=lambda: bool(self.pages))
         self.shell_echo = None           # the shell's terminal, when it types too
         self.watch = ServoWatch(symbols)
         self.dictionary_read = asyncio.Event()   # a probe's answer read (read_dictionary)
@@ -312,7 +315,8 @@ class Lab:
 
     async def frames(self):
         while not self.done.is_set():
-            await asyncio.sleep(frame_interval(self.status["speed"]))
+            await asyncio.sleep(frame_interval(self.status["speed"]) if self.pages
+                                else UNWATCHED_S)
             rows, self.rows = thin(self.rows, ROWS_PER_FRAME), []
             ticks = self.ticks.take(TICKS_PER_FRAME)
             if not self.pages:

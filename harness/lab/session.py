@@ -14,6 +14,7 @@ A lab's temporary directory holds lab.pid; a new lab removes the directories of
 labs whose process is gone (killed, so they could not clean up).
 """
 import asyncio
+import fcntl
 import os
 import shutil
 import sys
@@ -37,6 +38,9 @@ SPEEDS = {"real": 1, "x10": 10, "full": 0}
 READ_CHUNK = 1 << 16
 LAB_READ_PAUSE_S = 0.02      # the LAB FIFO: at most ~50 reads a second, not one per tick
                              # (600 at x10); its pipe holds 64 KB, 90 ms of rows at x10
+UNWATCHED_READ_PAUSE_S = 0.1 # ... while no page looks, if the pipe could be grown to
+PIPE_BYTES = 1 << 20         # this (1.5 s of rows at x10): an idle lab's wake-ups were
+                             # half its CPU, and only a page wants the rows soon
 QUEUE_LIMIT = 1 << 16        # characters waiting for the simulator; the pages send within it
 PUMP_S = 0.005               # how often waiting keys are offered to the pty
 EXIT_WAIT_S = 0.1            # for a simulator that has quit, before its pty is closed
@@ -80,9 +84,10 @@ class Simulator:
     ended(safe: bool, or None when the simulator exited by itself)."""
 
     def __init__(self, simulator, disk, console, lab, ended, speed="real", page=None,
-                 read_only=False):
+                 read_only=False, watched=None):
         self.callbacks = console, lab, ended
         self.page = page or console               # the leaving report: the page's copy
+        self.watched = watched or (lambda: True)  # whether a page looks (the FIFO's pace)
         self.simulator, self.disk, self.speed = simulator, disk, speed
         self.read_only = read_only
         remove_stale()
@@ -124,7 +129,10 @@ class Simulator:
         self.pumping = loop.create_task(self._pump())
         lab_lines = Lines()
         console, lab, _ = self.callbacks
-        self._watch(loop, "lab", lambda data: lab(lab_lines.feed(data)), LAB_READ_PAUSE_S)
+        roomy = _grow_pipe(self.fds["lab"])
+        self._watch(loop, "lab", lambda data: lab(lab_lines.feed(data)),
+                    lambda: LAB_READ_PAUSE_S if self.watched() or not roomy
+                    else UNWATCHED_READ_PAUSE_S)
         self.fds["pty"] = self.child.child_fd
 
         def read_console(data):
@@ -148,10 +156,10 @@ class Simulator:
                 self.page_keys(b"")               # the page's keys that waited for sim>
         self._watch(loop, "pty", read_console)
 
-    def _watch(self, loop, name, handle, pause=0):
-        """Hand what `name`'s fd gives to `handle`; with `pause`, after a read that
-        did not fill READ_CHUNK, that long without reading: meanwhile the writer's
-        rows gather in the FIFO, and one wake-up takes many."""
+    def _watch(self, loop, name, handle, pause=None):
+        """Hand what `name`'s fd gives to `handle`; with `pause` (() -> seconds),
+        after a read that did not fill READ_CHUNK, that long without reading:
+        meanwhile the writer's rows gather in the FIFO, and one wake-up takes many."""
         fd = self.fds[name]
 
         def resume():
@@ -176,7 +184,7 @@ class Simulator:
             handle(data)
             if pause and len(data) < READ_CHUNK and self.fds.get(name) == fd:
                 loop.remove_reader(fd)
-                loop.call_later(pause, resume)
+                loop.call_later(pause(), resume)
         loop.add_reader(fd, readable)
 
     def _unwatch(self, name):
@@ -357,6 +365,14 @@ class Simulator:
         say(*report)
         page.write("".join(f"\r\n[lab] {line}" for line in report).encode() + b"\r\n")
         return gone.safe
+
+
+def _grow_pipe(fd):
+    """Let the FIFO hold PIPE_BYTES (Linux's F_SETPIPE_SZ); whether it does."""
+    try:
+        return fcntl.fcntl(fd, fcntl.F_SETPIPE_SZ, PIPE_BYTES) >= PIPE_BYTES
+    except (OSError, AttributeError):            # not Linux, or above pipe-max-size
+        return False
 
 
 class _Echo:
