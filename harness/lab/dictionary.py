@@ -4,27 +4,46 @@ The header layout is harness.machine.kernel_layout's; a vocabulary's body holds
 the newest LFA of each of its chains (kernel_layout.chain_of). CREATE, VAR
 and ARRAY words keep their values in the body.
 """
+import struct
+
 from harness.machine.kernel_layout import CHAINS, LENGTH, SMUDGE, body_of
 
 MAX_HEADERS = 20000            # a broken chain must not loop for ever
+SPACE = 1 << 16                # the FORTH's 16-bit addresses (grown if a dump goes above)
 
 
 class Memory:
-    """Words by even address, filled from dumps; bytes read little-endian."""
+    """16-bit words by even address, filled from dumps; bytes read little-endian.
+    Held as the machine holds them, bytes beside a map of the bytes known, so a
+    header's name is one slice (a lab's start walks some 1 200 headers twice)."""
 
     def __init__(self):
-        self.words = {}
+        self.data = bytearray(SPACE)
+        self.known = bytearray(SPACE)           # 1 where a dump has said the byte
 
     def store(self, address, words):
-        for i, w in enumerate(words):
-            self.words[address + 2 * i] = w
+        end = address + 2 * len(words)
+        if end > len(self.data):
+            self.data += bytes(end - len(self.data))
+            self.known += bytes(end - len(self.known))
+        self.data[address:end] = struct.pack(f"<{len(words)}H", *words)
+        self.known[address:end] = b"\1" * (end - address)
 
     def word(self, address):
-        return self.words.get(address & ~1)
+        a = address & ~1
+        if a + 1 >= len(self.data) or not self.known[a]:
+            return None
+        return self.data[a] | self.data[a + 1] << 8
 
     def byte(self, address):
-        w = self.word(address)
-        return None if w is None else (w >> (8 * (address & 1))) & 0o377
+        one = self.bytes(address, 1)
+        return one[0] if one else None
+
+    def bytes(self, address, n):
+        """The n bytes from `address`, or None unless all are known."""
+        if address + n > len(self.data) or self.known.find(0, address, address + n) >= 0:
+            return None
+        return bytes(self.data[address:address + n])
 
 
 def header_name(memory, lfa):
@@ -32,10 +51,10 @@ def header_name(memory, lfa):
     count = memory.byte(lfa + 2)
     if count is None:
         return None, 0
-    chars = [memory.byte(lfa + 3 + i) for i in range(count & LENGTH)]
-    if None in chars:
+    name = memory.bytes(lfa + 3, count & LENGTH)
+    if name is None:
         return None, 0
-    return bytes(chars).decode("latin-1"), count
+    return name.decode("latin-1"), count
 
 
 def headers(memory, vocabulary_body):

@@ -104,16 +104,16 @@ class WordRows:
         fields = line.split(b",", 3)
         raw = fields[3] if len(fields) > 3 else b""
         if raw != self.raw:
-            self.raw, self.words = raw, [int(w) for w in raw.split(b",")] if raw else []
+            self.raw, self.words = raw, list(map(int, raw.split(b","))) if raw else []
         return float(fields[1]), int(fields[2]), self.words
 
 
 def words_of(row):
     """W row -> (time_s, tick, [words]); M row -> (address, [words])."""
     if row.kind == "W":
-        return float(row.fields[0]), int(row.fields[1]), [int(w) for w in row.fields[2:]]
+        return float(row.fields[0]), int(row.fields[1]), list(map(int, row.fields[2:]))
     if row.kind == "M":
-        return int(row.fields[0], 8), [int(w) for w in row.fields[1:]]
+        return int(row.fields[0], 8), list(map(int, row.fields[1:]))
     raise ValueError(f"not a row of words: {row.kind}")
 
 
