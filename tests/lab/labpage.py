@@ -39,19 +39,20 @@ def wait_for(what, condition, timeout=30, poll=0.05, seen=None):
         pause = min(poll, 2 * pause)
 
 
-# until()'s look in the page: `expression` every LOOK_MS there, for at most `seconds` (a
-# WebDriver script's own limit is 30 s: longer waits are several of these).
+# until()'s looks in the page, as wait_for's from here (10, 20, 40, then every 50 ms;
+# window.lab.screen() reads the whole scrollback), for at most `seconds` (a WebDriver
+# script's own limit is 30 s: longer waits are several of these).
 UNTIL = """const [seconds, done] = arguments, end = performance.now() + 1000 * seconds;
-let error = null; %s
+let error = null, pause = 10; %s
 const look = () => {
   let value = null;
   try { value = (%s); } catch (e) { error = String(e); }
   if (value) done({value});
   else if (performance.now() > end) done({error});
-  else setTimeout(look, %d);
+  else { setTimeout(look, pause); pause = Math.min(50, 2 * pause); }
 };
 look();"""
-LOOK_MS, UNTIL_CHUNK_S = 16, 20
+UNTIL_CHUNK_S = 20
 
 
 def until(page, what, expression, timeout=30, setup="", seen=None):
@@ -59,7 +60,7 @@ def until(page, what, expression, timeout=30, setup="", seen=None):
     statements, run once); its value, or an AssertionError as wait_for's. The page
     answers as soon as it holds, in one round trip: polled from here, each look is a
     round trip through chromedriver and a wait of up to 50 ms while the page draws."""
-    script = UNTIL % (setup, expression, LOOK_MS)
+    script = UNTIL % (setup, expression)
     deadline = time.monotonic() + timeout
     while True:
         answer = page.execute_async_script(script, max(0.0, min(deadline - time.monotonic(),
