@@ -1,5 +1,6 @@
 """Helpers of the lab's browser tests: waiting, and driving the page as a user."""
 import asyncio
+import json
 import os
 import threading
 import time
@@ -23,8 +24,10 @@ full_session = pytest.mark.skipif(not os.environ.get("LAB_BROWSER_FULL"),
 
 def wait_for(what, condition, timeout=30, poll=0.05, seen=None):
     """Poll condition() until it is true; its last value, or an AssertionError
-    (with what seen() returns then, to tell a slow host from a stuck lab)."""
+    (with what seen() returns then, to tell a slow host from a stuck lab). The first
+    looks come sooner (10, 20, 40 ms): most waits are for the page's next frame."""
     deadline = time.monotonic() + timeout
+    pause = min(poll, 0.01)
     while True:
         value = condition()
         if value:
@@ -32,7 +35,43 @@ def wait_for(what, condition, timeout=30, poll=0.05, seen=None):
         if time.monotonic() > deadline:
             raise AssertionError(f"timed out after {timeout} s waiting for {what}"
                                  + (f"; {seen()}" if seen else ""))
-        time.sleep(poll)
+        time.sleep(pause)
+        pause = min(poll, 2 * pause)
+
+
+# until()'s looks in the page, as wait_for's from here (10, 20, 40, then every 50 ms;
+# window.lab.screen() reads the whole scrollback), for at most `seconds` (a WebDriver
+# script's own limit is 30 s: longer waits are several of these).
+UNTIL = """const [seconds, done] = arguments, end = performance.now() + 1000 * seconds;
+let error = null, pause = 10; %s
+const look = () => {
+  let value = null;
+  try { value = (%s); } catch (e) { error = String(e); }
+  if (value) done({value});
+  else if (performance.now() > end) done({error});
+  else { setTimeout(look, pause); pause = Math.min(50, 2 * pause); }
+};
+look();"""
+UNTIL_CHUNK_S = 20
+
+
+def until(page, what, expression, timeout=30, setup="", seen=None):
+    """Wait in the page until a JavaScript expression is true (after `setup`'s
+    statements, run once); its value, or an AssertionError as wait_for's. The page
+    answers as soon as it holds, in one round trip: polled from here, each look is a
+    round trip through chromedriver and a wait of up to 50 ms while the page draws."""
+    script = UNTIL % (setup, expression)
+    deadline = time.monotonic() + timeout
+    while True:
+        answer = page.execute_async_script(script, max(0.0, min(deadline - time.monotonic(),
+                                                                UNTIL_CHUNK_S)))
+        if answer.get("value"):
+            return answer["value"]
+        if time.monotonic() > deadline:
+            raise AssertionError(f"timed out after {timeout} s waiting for {what}"
+                                 + (f" (the last look threw {answer['error']})"
+                                    if answer.get("error") else "")
+                                 + (f"; {seen()}" if seen else ""))
 
 
 def js(page, expression):
@@ -41,10 +80,10 @@ def js(page, expression):
 
 def type_line(page, line, answer=" ok", timeout=60):
     """Type a line into the page's terminal; wait for its answer on the screen."""
-    before = js(page, "window.lab.screen()").count(answer)
-    page.find_element(By.CSS_SELECTOR, "#terminal textarea").send_keys(line + "\n")
-    wait_for(f"{line!r} to be answered",
-             lambda: js(page, "window.lab.screen()").count(answer) > before, timeout)
+    count = f"window.lab.screen().split({json.dumps(answer)}).length"
+    before, keys = js(page, f"[{count}, document.querySelector('#terminal textarea')]")
+    keys.send_keys(line + "\n")
+    until(page, f"{line!r} to be answered", f"{count} > {before}", timeout)
     return js(page, "window.lab.screen()")
 
 
@@ -55,27 +94,27 @@ def click(page, selector):
 def pace(page, speed):
     """The page's pace button (real, x10, full); wait until the lab runs at it."""
     click(page, f'#speeds button[data-speed="{speed}"]')
-    wait_for(f"{speed} pace", lambda: js(page, "window.lab.status.speed") == speed)
+    until(page, f"{speed} pace", f"window.lab.status.speed === {json.dumps(speed)}")
 
 
 def pause(page):
     """The page's Pause button; wait until the lab is paused (no data comes: the page
     draws only when its view changes)."""
     click(page, "#pause")
-    wait_for("the pause", lambda: js(page, "window.lab.status.state") == "pause")
+    until(page, "the pause", "window.lab.status.state === 'pause'")
 
 
 def run(page):
     """Run again if the lab is paused (the Pause button then reads Run)."""
     if js(page, "window.lab.status.state") == "pause":
         click(page, "#pause")
-        wait_for("the run", lambda: js(page, "window.lab.status.state") == "run")
+        until(page, "the run", "window.lab.status.state === 'run'")
 
 
 def connected(page):
     """Wait until the page has its websocket and the server's hello (the axes)."""
-    wait_for("the page to connect", lambda: page.execute_script(
-        "return window.lab && window.lab.connected && window.lab.perAxis.length > 0"))
+    until(page, "the page to connect",
+          "window.lab && window.lab.connected && window.lab.perAxis.length > 0")
 
 
 def serious_violations(page):
@@ -97,7 +136,7 @@ def projector(page, width, height):
     page.execute_cdp_cmd("Emulation.setDeviceMetricsOverride",
                          {"width": width, "height": height, "deviceScaleFactor": 1, "mobile": False})
     try:
-        wait_for("the layout", lambda: js(page, "window.innerWidth") == width)
+        until(page, "the layout", f"window.innerWidth === {width}")
         yield
     finally:
         page.execute_cdp_cmd("Emulation.clearDeviceMetricsOverride", {})
@@ -109,7 +148,7 @@ def assert_on_screen(page, width, height, panels, buttons="header button"):
     is drawn inside its box."""
     drawn = page.execute_script("window.dispatchEvent(new Event('resize'));"
                                 "return window.lab.frames || 0")
-    wait_for("the page drawn again after the relayout", lambda: js(page, "window.lab.frames") > drawn)
+    until(page, "the page drawn again after the relayout", f"window.lab.frames > {drawn}")
     scroll = js(page, "[document.documentElement.scrollWidth, document.documentElement.scrollHeight]")
     assert scroll[0] <= width and scroll[1] <= height, scroll
     for panel in panels:

@@ -10,7 +10,7 @@ from harness.machine.plant_rows import COLUMNS
 
 from labpage import ARTIFACTS, AnotherPage, assert_on_screen, click, connected, frames, \
     full_session, js, pace, pause, projector, run, serious_violations, terminal_spills, type_line, \
-    wait_for
+    until, wait_for
 
 # The lab boots with the amplifier rack off, as make run does: nothing drifts until
 # the page's switch is turned on after Set.Up.Robot. x10 keeps the run short.
@@ -40,31 +40,28 @@ def test_a_move_shows_on_the_robot_and_the_scope(page, lab_server):
     type_line(page, "Set.Up.Robot")
     # once failed after 30 s on a host running at half its speed (make test-browser
     # 188 s, not 80-100): what the page and the lab had then, should it come again
-    wait_for("the servo's words to be found by name",
-             lambda: js(page, "window.lab.servo['Desire.Pos']"),
-             seen=lambda: f"the page's servo {js(page, 'JSON.stringify(window.lab.servo)')}, "
-                          f"status {js(page, 'JSON.stringify(window.lab.status)')}; "
-                          f"the lab's log ends {lab_server.text()[-600:]!r}")
+    until(page, "the servo's words to be found by name", "window.lab.servo['Desire.Pos']",
+          seen=lambda: f"the page's servo {js(page, 'JSON.stringify(window.lab.servo)')}, "
+                       f"status {js(page, 'JSON.stringify(window.lab.status)')}; "
+                       f"the lab's log ends {lab_server.text()[-600:]!r}")
     assert js(page, "window.lab.status.power") == "off"       # booted as make run does
     click(page, "#power")                            # the servo holds the axes: rack on
-    wait_for("the amplifiers on", lambda: js(page, "window.lab.status.power") == "on")
+    until(page, "the amplifiers on", "window.lab.status.power === 'on'")
+    robot_before, start = js(page, "[document.getElementById('robot').toDataURL(), "
+                                   "window.lab.latest.map(r => r[5])]")
+    pace(page, "real")                               # the scope's 30 s keep the whole move
+    type_line(page, "800 800 400 0 Abs.Move")
+    until(page, "Desire.Pos to follow the move",
+          "String(window.lab.servo['Desire.Pos']) === '800,800,400,0'")
+    until(page, "x, y, z to come near their targets",      # each axis, once it is there
+          "[800, 800, 400].map((t, a) => arrived[a] ||= "     # (it hunts)
+          "Math.abs(window.lab.latest[a][6] - t) < 60).every(Boolean)",
+          setup="const arrived = [];")
+    pause(page)                                      # all the rest looks at what is held
     power = page.find_element(By.ID, "power")     # labelled with what a click does
     wait_for("the switch relabelled (at the page's next frame)",
              lambda: power.text == "Turn amps off")
-    assert power.get_attribute("aria-pressed") == "true"
-    robot_before = js(page, "document.getElementById('robot').toDataURL()")
-    start = js(page, "window.lab.latest.map(r => r[5])")
-    pace(page, "real")                               # the scope's 30 s keep the whole move
-    type_line(page, "800 800 400 0 Abs.Move")
-    assert wait_for("Desire.Pos to follow the move",
-                    lambda: js(page, "window.lab.servo['Desire.Pos']") == [800, 800, 400, 0])
-    arrived = set()                                  # each axis, once it is there (it hunts)
-
-    def near():
-        counters = js(page, "window.lab.latest.map(r => r[6])")
-        arrived.update(a for a, t in enumerate((800, 800, 400)) if abs(counters[a] - t) < 60)
-        return len(arrived) == 3
-    wait_for("x, y, z to come near their targets", near)
+    assert power.get_dom_attribute("aria-pressed") == "true"
     end = js(page, "window.lab.latest.map(r => r[5])")
     assert all(abs(e - s - moved) < 150 for s, e, moved in zip(start, end, (800, 800, 400)))
     assert js(page, "document.getElementById('robot').toDataURL()") != robot_before
@@ -75,7 +72,6 @@ def test_a_move_shows_on_the_robot_and_the_scope(page, lab_server):
     origin = view["origin"]                           # Set.Up.Robot's zero: position - counter
     x = js(page, "window.lab.latest[0]")
     assert abs(origin[0] - (x[5] - x[6])) < 1.5     # the counter is the position, whole
-    pause(page)
     scope = scope_after_the_move(page)
     assert scope["steps"] == [[0, 800]]               # Desire.Pos: one step, at the move
     assert scope["step_at"] > scope["start"]          # inside the window, with history before it
@@ -86,8 +82,8 @@ def test_a_move_shows_on_the_robot_and_the_scope(page, lab_server):
 
 def breakpoint_row_in_the_panel(page):
     """The breakpoint row's bottom is inside the servo panel's (not below its fold)."""
-    row, servo = (js(page, f"document.getElementById('{e}').getBoundingClientRect().bottom")
-                  for e in ("break-row", "servo-panel"))
+    row, servo = js(page, "['break-row', 'servo-panel'].map("
+                          "(e) => document.getElementById(e).getBoundingClientRect().bottom)")
     assert row <= servo, f"the breakpoint row ends at {row}, below the servo panel's fold at {servo}"
     return True
 
@@ -97,8 +93,7 @@ def scope_after_the_move(page):
     page.execute_script("document.getElementById('scope-window').value = '30';"
                         "document.getElementById('scope-window').dispatchEvent(new Event('change'))")
     click(page, "#freeze")
-    wait_for("the frozen window", lambda: js(page, "window.lab.scope.view[1]") ==
-             js(page, "window.lab.scope.frozen.end"))
+    until(page, "the frozen window", "window.lab.scope.view[1] === window.lab.scope.frozen.end")
     return js(page, """(() => {
       const s = window.lab.scope, d = s.plot.data, steps = [];
       let at = null;
@@ -200,15 +195,15 @@ def test_the_page_fits_both_projectors_without_scrolling(page, width, height):
     """Each panel present, nothing scrolls, at both projector sizes; the screenshots
     (build/test-artifacts/lab-WIDTH.png) are looked at by eye."""
     if width == 1280:                                # a longer move, for the trail to show
-        run(page)                                    # the move test paused it
-        pace(page, "x10")                            # the move test chose real pace
-        type_line(page, "3200 -2400 400 0 Abs.Move")
-        wait_for("the move", lambda: js(page, "window.lab.latest[0][6]") > 3000)
-        pace(page, "real")                           # as the later tests had it
+        pace(page, "x10")                            # the move test chose real pace; chosen
+        run(page)                                    # while it is paused (the move test's),
+        type_line(page, "3200 -2400 400 0 Abs.Move")   # the lab runs only for the move
+        until(page, "the move", "window.lab.latest[0][6] > 3000")
         pause(page)                                  # its trail (the last 10 simulated
         # seconds) stays in the screenshots; and paused, no data comes, so the page
         # draws only when the layout changes: running, Chromium drew ~27 frames a
         # second through both sizes' checks, some 3 CPU-s of make test's
+        pace(page, "real")                           # as the later tests had it
     with projector(page, width, height):
         assert_on_screen(page, width, height,
                          ("console-panel", "robot-panel", "servo-panel", "scope-panel"))
