@@ -13,6 +13,15 @@ from harness.lab.page_client import Page as Client
 TIMEOUT = 20
 
 
+def lab_state(messages):
+    """What the lab's frames last said of its status and servo words (for a
+    failure: a hint that never came may be a servo table that never filled)."""
+    status = next((m["status"] for m in reversed(messages) if m.get("status")), None)
+    servo = next((m["servo"] for m in reversed(messages) if m.get("servo") is not None), None)
+    return (f"status {status}; servo words {sorted(servo) if servo else servo}, "
+            f"Command.Status {servo.get('Command.Status') if servo else None}")
+
+
 class Page:
     """The page's console as these tests use it: keys sent without waiting for their
     answer, the console read until a pattern shows. harness/lab/page_client.py's
@@ -42,8 +51,10 @@ class Page:
                 await self.message(lambda m: regex.search(self.screen, start))
             except AssertionError as why:
                 refused = [m["why"] for m in self.client.messages if m["t"] == "error"]
-                raise AssertionError(f"no {pattern!r}: {why}; refused: {refused}") from None
+                raise AssertionError(f"no {pattern!r}: {why}; refused: {refused}; "
+                                     f"the lab's last {lab_state(self.client.messages)}") from None
         return self.screen[start:]
+
 
     async def at_sim(self, line, answer):
         """Type `line` at sim> and wait for `answer` and the next prompt."""
