@@ -60,9 +60,12 @@ class ServoWatch:
             state = self._state()
             if state != self.seen and None not in state:
                 self.seen = state
-                here = state[-1]
-                self.dump_end = here - 2
-                return [f"dump {ORIGIN:o} {(here - ORIGIN) // 2}"]
+                # to HERE's last byte: HERE is odd while a header's name or a
+                # string is compiled, and a dump that ended a byte short would
+                # never bring the row of dump_end (the watch stuck for good)
+                words = (state[-1] - ORIGIN + 1) // 2
+                self.dump_end = ORIGIN + 2 * (words - 1)
+                return [f"dump {ORIGIN:o} {words}"]
         elif self.dump_end is not None and address <= self.dump_end <= last:
             self.dump_end = None
             return [self._watch_command()]

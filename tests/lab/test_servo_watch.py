@@ -89,6 +89,38 @@ def test_servo_watch_dumps_the_dictionary_when_it_changes_and_watches_by_name():
     assert watch.on_memory(0o6344, [d.here]) == []
 
 
+def device_dump(memory, command):
+    """The M rows (address, words) the LAB device writes for `dump a n` (64 a row)."""
+    _, address, n = command.split()
+    address, n = int(address, 8), int(n)
+    words = [memory.word(address + 2 * i) or 0 for i in range(n)]
+    return [(address + 128 * r, words[64 * r:64 * r + 64]) for r in range(0, (n + 63) // 64)]
+
+
+def test_a_probe_while_here_is_odd_still_ends_in_a_watch_list():
+    """A probe can land while a LOAD compiles a header's name or a string: HERE is
+    odd then. The dump must reach HERE's last byte, and its last row end the
+    dump, or the watch never looks at the dictionary again (the servo table
+    stayed empty for good, and the rack's hint never came)."""
+    d = Dictionary()
+    fence = d.here
+    d.header("Dir", body_words=1)
+    here = d.here + 3                                      # a name half laid down
+    watch = ServoWatch(symbols())
+    watch.probe()
+    watch.on_memory(VOCABULARY, d.heads)
+    watch.on_memory(0o6462, [fence])
+    [dump] = watch.on_memory(0o6344, [here])
+    d.memory.store(0o6344, [here])
+    d.memory.store(0o6462, [fence])
+    assert int(dump.split()[2]) * 2 + ORIGIN >= here       # HERE's last byte included
+    out = [c for address, words in device_dump(d.memory, dump)
+           for c in watch.on_memory(address, words)]
+    assert out == [f"watch {watch.found['Dir']:o}"]
+    watch.on_addresses([watch.found["Dir"]])
+    assert watch.settled()
+
+
 def test_signed():
     assert signed(0o177777) == -1 and signed(0o77777) == 32767 and signed(0) == 0
 
