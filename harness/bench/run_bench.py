@@ -14,14 +14,13 @@ import tempfile
 import time
 from pathlib import Path
 
-
 from harness.analysis import regression
 from harness.controllers.scripted import run_five_file
 from harness.machine.build import PDP11, ROOT, fresh_disk
+from harness.machine.pty_spawn import Spawn
 from harness.machine.script import parse
 from harness.machine.script_run import run_steps
 from harness.machine.scripted_machine import ScriptedMachine
-from harness.machine.pty_spawn import Spawn
 
 IDLE_SECONDS = 20.0
 

@@ -22,7 +22,6 @@ import threading
 import time
 from pathlib import Path
 
-
 from harness.controllers.boot_lines import MAIN_BOOT_LINES, axis_boot_lines
 from harness.controllers.bridge import ConsoleBridge
 from harness.controllers.coordinator import CONTROLLERS, Coordinator, member_settings

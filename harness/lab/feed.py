@@ -108,13 +108,11 @@ class WordRows:
         return float(fields[1]), int(fields[2]), self.words
 
 
-def words_of(row):
-    """W row -> (time_s, tick, [words]); M row -> (address, [words])."""
-    if row.kind == "W":
-        return float(row.fields[0]), int(row.fields[1]), list(map(int, row.fields[2:]))
+def memory_of(row):
+    """M row -> (address, [words]) (a W row's words: WordRows)."""
     if row.kind == "M":
         return int(row.fields[0], 8), list(map(int, row.fields[1:]))
-    raise ValueError(f"not a row of words: {row.kind}")
+    raise ValueError(f"not a row of memory: {row.kind}")
 
 
 def thin(rows, budget):

@@ -17,8 +17,8 @@ import sys
 from pathlib import Path
 
 from harness.lab import breakpoints, guard, lesson_checks, protocol, shell_terminal, web
-from harness.lab.feed import (WordRows, lab_row, other_lines, plant_lines, plant_rows, thin,
-                              words_of)
+from harness.lab.feed import (WordRows, lab_row, memory_of, other_lines, plant_lines,
+                              plant_rows, thin)
 from harness.lab.front_panel import PANEL_WORDS, WordIndex
 from harness.lab.panel_feed import PanelFeed
 from harness.lab.program_pane import LatestQuestion, ProgramPane
@@ -200,7 +200,7 @@ class Lab:
 
     def device_row(self, row):
         if row.kind == "M":
-            for command in self.watch.on_memory(*words_of(row)):
+            for command in self.watch.on_memory(*memory_of(row)):
                 self.sim.command(command)
             if self.watch.settled():
                 self.dictionary_read.set()

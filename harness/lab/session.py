@@ -21,7 +21,6 @@ import sys
 import tempfile
 from pathlib import Path
 
-
 from harness.lab.feed import Lines
 from harness.lab.sim_prompt_guard import SimPromptGuard, prompt_termios
 from harness.lab.protocol import device_command
@@ -31,8 +30,8 @@ from harness.machine.console_session import (RACK_OFF, bye_halt, leave, say,
                                              simh_exit_report)
 from harness.machine.console_watch import SIM_PROMPT, Leave, LineWatcher
 from harness.machine.key_feed import KeyFeed, shown
-from harness.machine.simh_command import RUNS, simh_command
 from harness.machine.pty_spawn import Spawn
+from harness.machine.simh_command import RUNS, simh_command
 
 SPEEDS = {"real": 1, "x10": 10, "full": 0}
 READ_CHUNK = 1 << 16

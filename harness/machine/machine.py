@@ -22,8 +22,8 @@ from harness.blocks.disk import RL02_BYTES
 from harness.machine import pty_child
 from harness.machine.build import KERNEL, ROOT  # noqa: F401
 from harness.machine.build import PDP11 as SIMULATOR
-from harness.machine.simh import boot_script
 from harness.machine.pty_spawn import Spawn
+from harness.machine.simh import boot_script
 
 OK = re.compile(r" (?:ok|compiled)\r\n")   # compiled: a definition or structure is open
 ERROR = re.compile(r"\r\nError: ([^\r\n]*)\r\n")
@@ -104,6 +104,11 @@ class Machine:
         if "\r" in line or "\n" in line:
             raise ValueError("one line at a time")
         self.child.send(line + "\r")
+        return self.answer(line, timeout)
+
+    def answer(self, line, timeout=None):
+        """The FORTH's answer to `line`, already typed (reply's; a test that types
+        lines ahead of their answers reads them one by one)."""
         i = self.child.expect([OK, ERROR, SIM_PROMPT, pexpect.EOF, pexpect.TIMEOUT],
                               timeout=timeout or self.timeout)
         text = self.child.before

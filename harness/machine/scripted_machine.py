@@ -33,9 +33,9 @@ from pathlib import Path
 import pexpect
 
 from harness.machine import pty_child
-from harness.machine.pty_spawn import Spawn
 from harness.machine.build import KERNEL, KERNEL_MAP, MACHINE_INI, PDP11, ROOT
 from harness.machine.kernel_layout import KernelMapError, read_kernel_map
+from harness.machine.pty_spawn import Spawn
 from harness.machine.ring_image import ring_image, ring_pieces
 from harness.machine.simh import examined
 

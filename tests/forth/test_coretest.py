@@ -6,10 +6,9 @@ copied here); tests/forth/tester.fs is this project's { -> } harness."""
 from collections import deque
 from pathlib import Path
 
-import pexpect
 import pytest
 
-from harness.machine.machine import ERROR, OK, SIM_PROMPT, Machine, Reply
+from harness.machine.machine import Machine
 from tests.forth.suite import SuiteResult, assert_passed, feed, load_tester, totals
 
 CORETEST = Path("/usr/share/gforth/0.7.3/test/coretest.fs")
@@ -21,23 +20,18 @@ class TypedAhead:
     the FORTH's ring and its XON/XOFF keep them (test_language.py's paste tests),
     and an error leaves the lines after it in the ring. A round trip a line cost
     more host CPU (the simulator's idle steps and pexpect's) than the FORTH's
-    work. reply(line) is Machine.reply's answer, the line's echo left in."""
+    work. reply(line) is Machine.reply's answer."""
 
     def __init__(self, machine, lines):
         self.machine, self.lines, self.typed = machine, deque(lines), deque()
 
     def reply(self, line):
-        child = self.machine.child
         if not self.typed:
             for _ in range(min(AHEAD, len(self.lines))):
                 self.typed.append(self.lines.popleft())
-            child.send("".join(f"{typed}\r" for typed in self.typed))
+            self.machine.child.send("".join(f"{typed}\r" for typed in self.typed))
         assert self.typed.popleft() == line, "the lines are answered in the order typed"
-        i = child.expect([OK, ERROR, SIM_PROMPT, pexpect.EOF, pexpect.TIMEOUT],
-                         timeout=self.machine.timeout)
-        if i > 1:
-            self.machine._stopped(line, timed_out=(i == 4))
-        return Reply(i == 0, child.before, child.match.group(1) if i == 1 else "")
+        return self.machine.answer(line)
 
 
 def test_hayes_core_test():
