@@ -2,6 +2,7 @@
 (exit 2) that names the value and says what was expected."""
 import argparse
 import math
+from pathlib import Path
 
 
 def number_above(kind, low, what, at_most=None):
@@ -21,3 +22,10 @@ def number_above(kind, low, what, at_most=None):
 
 positive = number_above(float, 0, "a positive number")
 count = number_above(int, 0, "a whole number >= 1")
+
+
+def absolute_path(text):
+    """A path made absolute against the directory the command was started in: the
+    simulator is started in another (a run's own, the project's), where a relative
+    name would name nothing."""
+    return str(Path(text).absolute())

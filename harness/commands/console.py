@@ -4,7 +4,7 @@ import shutil
 from pathlib import Path
 
 from harness.blocks.disk import DiskError, check_image, check_not_held
-from harness.commands.argtypes import number_above, positive
+from harness.commands.argtypes import absolute_path, number_above, positive
 from harness.machine.console_session import BUSY_WAIT, HINT, IDLE_SPEED_MAX, RACK_HINT, session
 from harness.machine.build import (PDP11, PDP11_TIMED, PRISTINE_DISK as PRISTINE,
                                     WORKING_DISK as WORK_DISK)
@@ -55,7 +55,7 @@ def configure(parser):
     parser.add_argument("--timed", action="store_true",
                         help="11/23 time: each instruction takes its KDF11-A time (SET CLK "
                         "TIMED, on build/pdp11-timed) instead of 1/300000 s")
-    parser.add_argument("--simulator", help=argparse.SUPPRESS)
+    parser.add_argument("--simulator", type=absolute_path, help=argparse.SUPPRESS)
     # wall seconds a running word gets at BYE before ^C stops it (tests shorten it)
     parser.add_argument("--busy-wait", type=positive, default=BUSY_WAIT,
                         help=argparse.SUPPRESS)

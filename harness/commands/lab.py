@@ -5,6 +5,7 @@ import asyncio
 from pathlib import Path
 
 from harness.blocks.disk import DiskError
+from harness.commands.argtypes import absolute_path
 from harness.commands.console import ConsoleError, working_disk
 from harness.lab.server import NODE_MODULES, serve
 from harness.machine.build import KERNEL_MAP, PDP11
@@ -34,7 +35,8 @@ def configure(parser):
                         help="pace at start (default: the 11/23's real pace)")
     parser.add_argument("--read-only", action="store_true",
                         help="attach the disk read-only (beside a simulator writing it)")
-    parser.add_argument("--simulator", default=str(PDP11), help=argparse.SUPPRESS)
+    parser.add_argument("--simulator", default=str(PDP11), type=absolute_path,
+                        help=argparse.SUPPRESS)
     parser.set_defaults(run=run)
 
 

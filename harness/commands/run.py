@@ -3,7 +3,7 @@ import argparse
 import sys
 from pathlib import Path
 
-from harness.commands.argtypes import positive
+from harness.commands.argtypes import absolute_path, positive
 from harness.machine.build import KERNEL, PDP11, PDP11_TIMED, PRISTINE_DISK
 from harness.machine.script_run import ERRORS, run_file  # noqa: F401 (ERRORS: cli reports them)
 from harness.machine.scripted_machine import ScriptError
@@ -53,7 +53,7 @@ def configure(parser):
                         help="11/23 time: each instruction takes its KDF11-A time (SET CLK "
                         "TIMED, on build/pdp11-timed) instead of 1/300000 s; the clock "
                         "ticks every real 1/60 s")
-    parser.add_argument("--simulator", help=argparse.SUPPRESS)
+    parser.add_argument("--simulator", type=absolute_path, help=argparse.SUPPRESS)
     parser.set_defaults(run=run)
 
 

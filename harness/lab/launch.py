@@ -8,8 +8,11 @@ import time
 from pathlib import Path
 
 from harness.machine.build import ROOT, fresh_disk
+from harness.machine.parent_death import ended_with_parent, ended_with_parent_preexec
 
 CHROMIUM, CHROMEDRIVER = Path("/usr/bin/chromium"), Path("/usr/bin/chromedriver")
+# Chromium as the driver starts it: ended with the driver (parent_death.py)
+CHROMIUM_ENDED_WITH_DRIVER = Path(__file__).with_name("chromium-ended-with-driver")
 URL = re.compile(r"http://127\.0\.0\.1:(\d+)/\?token=(\S+)")
 
 
@@ -17,7 +20,9 @@ class LabProcess:
     """`python -m harness lab` on a copy of the pristine disk, on a free port; ten times
     the 11/23's pace unless asked otherwise: at full speed a lab whose FORTH waits at
     its prompt races simulated time, a host core busy for nothing (measured: half of
-    the lab tests' simulator CPU), while x10 still runs a 1000 LOAD in half a second."""
+    the lab tests' simulator CPU), while x10 still runs a 1000 LOAD in half a second.
+    A starter that dies without stop() takes the lab with it: the lab gets the ^C
+    (SIGINT) it would have sent, and ends its simulator as a user's ^C does."""
 
     def __init__(self, tmp, speed="x10"):
         """Starts the lab; its URL is waited for when first asked (url, port, token),
@@ -26,8 +31,9 @@ class LabProcess:
         self.log = Path(tmp) / "lab.log"
         with open(self.log, "w") as log:
             self.proc = subprocess.Popen(
-                [sys.executable, "-m", "harness", "lab", "--port", "0", "--speed", speed,
-                 "--disk", str(disk)], cwd=ROOT, stdout=log, stderr=subprocess.STDOUT)
+                ended_with_parent([sys.executable, "-m", "harness", "lab", "--port", "0",
+                                   "--speed", speed, "--disk", str(disk)], signal.SIGINT),
+                cwd=ROOT, stdout=log, stderr=subprocess.STDOUT)
         self._started = time.monotonic()
         self._served = None
 
@@ -87,11 +93,13 @@ def headless_browser(width=1920, height=1080):
     from selenium import webdriver
     from selenium.webdriver.chrome.service import Service
     options = webdriver.ChromeOptions()
-    options.binary_location = str(CHROMIUM)
+    options.binary_location = str(CHROMIUM_ENDED_WITH_DRIVER)
     for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
                 f"--window-size={width},{height}", "--hide-scrollbars", NO_BROWSER_UI):
         options.add_argument(arg)
-    driver = webdriver.Chrome(service=Service(str(CHROMEDRIVER)), options=options)
+    # the driver ends with this process, and Chromium with the driver (parent_death.py)
+    service = Service(str(CHROMEDRIVER), popen_kw={"preexec_fn": ended_with_parent_preexec()})
+    driver = webdriver.Chrome(service=service, options=options)
     frame = driver.execute_script("return [outerWidth - innerWidth, outerHeight - innerHeight]")
     if any(frame):
         driver.set_window_size(width + frame[0], height + frame[1])

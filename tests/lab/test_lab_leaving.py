@@ -7,12 +7,16 @@ BYE word inside a line ends the lab as it ends make run."""
 import asyncio
 import contextlib
 import signal
+import subprocess
+import sys
 import time
 
 import pytest
 
 from harness.lab.launch import LabProcess
 from harness.lab.page_client import Page
+from harness.machine.build import ROOT
+from tests.process_ends import ended_within
 
 BLOCK = 300
 BOOTED = "blocks 0-10239.\r\n ok\r\n"
@@ -99,3 +103,28 @@ def test_a_late_ctrl_c_does_not_change_how_the_lab_ended(tmp_path):
         server.stop()
     assert server.proc.returncode == 0, server.text()[-2000:]
     assert "Traceback" not in server.text()
+
+
+# A starter that dies without stop(): a lab, its URL waited for, the pids, then killed.
+KILLED_STARTER = """
+import os, sys
+from pathlib import Path
+from harness.lab.launch import LabProcess
+server = LabProcess(Path(sys.argv[1]))
+server.url
+print(server.proc.pid, server.simulator_pid(), flush=True)
+os.kill(os.getpid(), 9)
+"""
+
+
+def test_a_lab_ends_with_flush_when_the_process_that_started_it_is_killed(tmp_path):
+    """A test or benchmark killed mid-run (SIGKILL, a CI timeout) once left its lab and
+    simulator running at x10 for an hour: the lab now gets the ^C its starter would
+    have sent (parent_death.py) and leaves as ^C leaves, FLUSH first."""
+    starter = subprocess.run([sys.executable, "-c", KILLED_STARTER, str(tmp_path)], cwd=ROOT,
+                             capture_output=True, text=True, timeout=60)
+    assert starter.returncode == -signal.SIGKILL, starter.stderr
+    lab_pid, simulator_pid = map(int, starter.stdout.split())
+    assert ended_within([lab_pid, simulator_pid], 30), "the lab outlived its killed starter"
+    log = (tmp_path / "lab.log").read_text()
+    assert "FLUSH answered ok" in log and "Traceback" not in log, log

@@ -57,6 +57,16 @@ def test_default_outputs_beside_the_script_and_named_options(tmp_path):
     assert r.returncode == 0 and (tmp_path / "t.txt").read_text().endswith("1 . 1  ok\n")
 
 
+def test_a_simulator_named_relative_to_where_the_command_started(tmp_path, monkeypatch):
+    """--simulator (make's profile-guided training run names one) is found from the
+    directory the command started in, not from the run's own, where it starts."""
+    script = tmp_path / "s.script"
+    script.write_text("1 .\n")
+    monkeypatch.chdir(ROOT / "build")
+    r = harness("run", script, "--simulator", "pdp11")
+    assert r.returncode == 0, r.stderr
+
+
 def test_a_line_that_never_finishes_is_stopped_in_simulated_time(tmp_path):
     script = tmp_path / "loop.script"
     script.write_text(": SPIN ( -- ) BEGIN AGAIN ;\nSPIN\n1 .\n")
