@@ -78,6 +78,12 @@ def test_a_move_shows_on_the_robot_and_the_scope(page, lab_server):
     assert min(scope["counter"]) < 50 and max(scope["counter"]) > 700   # X's counter moved
     low, high = js(page, "[window.lab.scope.plot.scales.counts.min, window.lab.scope.plot.scales.counts.max]")
     assert low <= min(scope["counter"]) and max(scope["counter"]) <= high   # all of it in sight
+    # CH4, the DAC code (a scale without an axis), in its lane: the top quarter, not
+    # a full-height band over the counter
+    lane = js(page, """(() => { const u = window.lab.scope.plot, s = u.scales['plant:dac'];
+      const dac = u.data[4].filter((v) => v !== null);
+      return [Math.min(...dac), Math.max(...dac)].map((v) => (v - s.min) / (s.max - s.min)); })()""")
+    assert lane[0] < lane[1] and 0.75 <= lane[0] and lane[1] <= 1, lane
 
 
 def breakpoint_row_in_the_panel(page):

@@ -234,7 +234,7 @@ function rebuildPlot() {
   scope.plot = new uPlot({
     width: Math.max(100, r.width), height: Math.max(60, r.height),
     legend: { show: false }, series: [{}].concat(list), axes,
-    scales: Object.fromEntries([["x", { time: false }]].concat(scales.map((s) => [s, { auto: true }]))),
+    scales: Object.fromEntries([["x", { time: false }]].concat(scales.map((s, k) => [s, scaleOf(k)]))),
     cursor: { drag: { x: true, y: false, setScale: false }, points: { show: false } },
     hooks: {
       setSelect: [(u) => {           // a dragged span: zoom to it (the view holds still)
@@ -253,6 +253,22 @@ function rebuildPlot() {
     scope.setCursors(...(scope.cursors[0] === null || scope.cursors[1] !== null ? [t, null] : [scope.cursors[0], t]));
   });
   lab.dirty = true;
+}
+
+// The first two scales have an axis and the whole height. A third or fourth, read
+// with the cursors, gets a lane of its own, a quarter of the height from the top
+// down, as a scope's channel has its own position: the hunting servo's DAC code
+// swings full scale at every tick, and over the whole height its band hid the
+// counter and Desire.Pos drawn under it.
+const LANE = 0.25, LANE_MARGIN = 0.02;
+function scaleOf(k) {
+  if (k < 2) return { auto: true };
+  const top = 1 - LANE * (k - 2), bottom = top - LANE;      // fractions of the height
+  return { auto: true, range: (u, low, high) => {
+    const lo = low ?? 0, hi = high ?? 1, span = (hi - lo || 1) / (LANE - 2 * LANE_MARGIN);
+    const min = (hi === lo ? lo - 0.5 : lo) - (bottom + LANE_MARGIN) * span;
+    return [min, min + span];
+  } };
 }
 
 function drawCursors(u) {
