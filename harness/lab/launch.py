@@ -1,5 +1,6 @@
 """Start a lab as a user would, in its own process, and a headless Chromium to look
 at it: shared by the lab's tests and its benchmark."""
+import os
 import re
 import signal
 import subprocess
@@ -98,7 +99,8 @@ def headless_browser(width=1920, height=1080):
                 f"--window-size={width},{height}", "--hide-scrollbars", NO_BROWSER_UI):
         options.add_argument(arg)
     # the driver ends with this process, and Chromium with the driver (parent_death.py)
-    service = Service(str(CHROMEDRIVER), popen_kw={"preexec_fn": ended_with_parent_preexec()})
+    service = Service(str(CHROMEDRIVER), env={**os.environ, "LAB_CHROMIUM": str(CHROMIUM)},
+                      popen_kw={"preexec_fn": ended_with_parent_preexec()})
     driver = webdriver.Chrome(service=service, options=options)
     frame = driver.execute_script("return [outerWidth - innerWidth, outerHeight - innerHeight]")
     if any(frame):
