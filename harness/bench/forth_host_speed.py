@@ -6,7 +6,11 @@ one scripted line (harness/machine/scripted_machine.py) after
 1000 LOAD, so the clock ticks and the servo idles as in every robot run. The line's
 instruction count comes from SHOW CLK's time (instructions / RATE); its host time
 is the wall time of that one SIMH round trip, best of ROUNDS with the variants
-taking turns (the host is shared: noise only slows runs).
+taking turns (the host is shared: noise only slows runs). The ratios are also
+taken round by round and their median printed with their spread: on a shared
+host the best-of figures of two variants can come from different moments (the
+guided/plain ratio of the best-of figures read 1.16 to 1.39 on one afternoon),
+and a round's two runs are seconds apart.
 
 Variants:
   cue         build/pdp11-plain, the CUE device stops at the prompt (what runs today)
@@ -14,13 +18,14 @@ Variants:
               runs did before: SIMH tests every instruction's address)
   guided      build/pdp11-guided (mk/pgo.mk), the CUE device"""
 import re
+import statistics
 import tempfile
 import time
 
 from harness.machine.build import BUILD, fresh_disk
 from harness.machine.scripted_machine import ScriptedMachine
 
-ROUNDS = 5
+ROUNDS = 9
 SIEVE = [
     "8190 CONSTANT SIZE  CREATE FLAGS SIZE ALLOT",
     ": PRIMES ( -- n ) FLAGS SIZE 1 FILL  0 SIZE 0 DO FLAGS I + C@ IF I 2* 3 + DUP I + "
@@ -52,22 +57,32 @@ def sieve_run(simulator, breakpoint):
 
 
 def rates(rounds=ROUNDS):
-    """variant -> M instructions per host second (best of `rounds`)."""
-    best = {}
+    """(instructions, variant -> [M instructions per host second, a round each])."""
+    runs = {name: [] for name in VARIANTS}
     for _ in range(rounds):
         for name, (simulator, breakpoint) in VARIANTS.items():
             n, wall = sieve_run(simulator, breakpoint)
-            best[name] = max(best.get(name, 0), n / wall / 1e6)
-    return n, best
+            runs[name].append(n / wall / 1e6)
+    return n, runs
+
+
+def ratio(runs, a, b):
+    """a against b, best against best, and round by round: 'best 1.21x; per round
+    median 1.18x (1.02-1.40)'."""
+    each = [x / y for x, y in zip(runs[a], runs[b])]
+    return (f"best {max(runs[a]) / max(runs[b]):.2f}x; per round median "
+            f"{statistics.median(each):.2f}x ({min(each):.2f}-{max(each):.2f})")
 
 
 def report():
-    n, best = rates()
+    n, runs = rates()
+    best = {name: max(rates_) for name, rates_ in runs.items()}
     print(f"FORTH host speed: the Sieve ({n:,} instructions) after 1000 LOAD, best of "
           f"{ROUNDS}, taking turns (M PDP-11 instructions per host second)")
     print(f"  build/pdp11-plain, stop by the CUE device : {best['cue']:8.1f}")
     print(f"  build/pdp11-plain, stop by a breakpoint   : {best['breakpoint']:8.1f}  "
-          f"(before issue 19; cue/breakpoint {best['cue'] / best['breakpoint']:.2f}x)")
+          f"(before issue 19; cue/breakpoint {ratio(runs, 'cue', 'breakpoint')})")
     print(f"  build/pdp11-guided (profile-guided)       : {best['guided']:8.1f}  "
-          f"(guided/plain {best['guided'] / best['cue']:.2f}x; build/pdp11 is guided only "
-          "with make PGO=1: it pays at 1.3x)")
+          f"(guided/plain {ratio(runs, 'guided', 'cue')})")
+    print("  build/pdp11 is guided only with make PGO=1: it would pay at 1.3x, the "
+          "round-by-round median")
