@@ -19,6 +19,13 @@
 # -fipa-pta 1.10. Nearly 90 % of the plain build's time (perf) is SIMH's CPU core:
 # sim_instr, and relocR, ReadW, ReadE, GeteaW (the 11/23's memory management
 # relocating every access); guidance only inlines and lays out that code.
+# Measured again on 2026-11-29, the host noisy (one variant's runs 27-45 M/s): the
+# best-of figures gave 1.07-1.39, the round-by-round median 1.27-1.39; make test on
+# the guided build passed the same 879 tests in 75-76 CPU-s against 82-85 (39.7-41.4
+# s against 43.6-45.3 s wall), but the guided build from a clean tree takes 52 s of
+# wall time (56 CPU-s). Every CI run and a newcomer's first make run (whose console
+# is paced to the wall clock anyway) would pay that to save 3-5 s a make test: it
+# stays PGO=1. The build is reproducible: rebuilt from clean, byte for byte the same.
 # `make bench-devices` builds and times it.
 PGO ?= 0
 # both passes at -O3: the profile is read after the early inliner, whose choices
