@@ -123,9 +123,9 @@ def main():
     wall, done = test_suite()
     print(f"  make test (the whole suite, as a user runs it): {wall:6.1f} s, "
           f"exit status {done.returncode}   (goal <= 25 s; it follows the host's speed, "
-          "which bench-devices' stock figure shows: 875 tests 38-40 s against 42-43 s "
-          "for the code of the stop before, alternating, on a host at 124 M/s; 867 tests "
-          "49-57 s at 123 M/s; 32 s for 579 when the goal was set)")
+          "which bench-devices' stock figure shows: 879 tests 38.5 s on a host at "
+          "124 M/s, 49-54 s at 76 M/s; 875 tests 38-40 s at 124 M/s; 32 s for 579 "
+          "when the goal was set)")
 
 
 if __name__ == "__main__":
