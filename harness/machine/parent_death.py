@@ -33,10 +33,11 @@ def ended_with_parent_preexec(signal=signals.SIGTERM):
     """A preexec_fn that sets the parent-death signal (and ends the child at once if
     the parent is already gone: the signal is only sent for a death after it is set)."""
     parent = os.getpid()
+    prctl = ctypes.CDLL(None, use_errno=True).prctl   # looked up here: the child of a
+                                                      # threaded process only calls it
 
     def preexec():
-        libc = ctypes.CDLL(None, use_errno=True)
-        if libc.prctl(PR_SET_PDEATHSIG, int(signal), 0, 0, 0) != 0:
+        if prctl(PR_SET_PDEATHSIG, int(signal), 0, 0, 0) != 0:
             raise OSError(ctypes.get_errno(), "prctl(PR_SET_PDEATHSIG)")
         if os.getppid() != parent:
             os.kill(os.getpid(), signal)
