@@ -19,9 +19,10 @@ include $(filter-out mk/simh.mk mk/python.mk,$(wildcard mk/*.mk))
 # The products build in parallel, a job per core (a fresh checkout's build: 65 s
 # one job at a time, 38 s with two on this 2-core machine): `all` and make run's
 # prerequisites are made by a sub-make with -j, unless make was given its own -j.
-# What comes after them (the console, pytest, each benchmark) runs alone as before.
+# What comes after them (the console, pytest, each benchmark) runs alone as before;
+# -s: the recipes print their own progress, not make's "is up to date" for each goal.
 JOBS ?= $(shell nproc)
-IN_PARALLEL = $(MAKE) --no-print-directory $(if $(findstring jobserver,$(MAKEFLAGS)),,-j$(JOBS))
+IN_PARALLEL = $(MAKE) -s --no-print-directory $(if $(findstring jobserver,$(MAKEFLAGS)),,-j$(JOBS))
 
 all:  ## build everything: the simulator, the FORTH kernel, the disk image (in parallel)
 	@$(IN_PARALLEL) products
