@@ -26,7 +26,7 @@ IN_PARALLEL = $(MAKE) -s --no-print-directory $(if $(findstring jobserver,$(MAKE
 
 all:  ## build everything: the simulator, the FORTH kernel, the disk image (in parallel)
 	@$(IN_PARALLEL) products
-products: $(ALL_PRODUCTS)
+products: $(ALL_PRODUCTS)  ## what all builds, one job at a time unless make is given -j (all runs it with -j)
 
 # One worker more than the cores: a worker waiting on a simulator's answer leaves
 # its core to another. Bytecode is cached even where the environment says not to

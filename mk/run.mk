@@ -24,6 +24,6 @@ run:
 	@echo "make run CONTROLLERS=$(CONTROLLERS): the five-machine run has four controllers (CONTROLLERS=4)" >&2; exit 2
 endif
 
-run-needs:
+run-needs:  ## what make run needs (CONTROLLERS=4: the five machines), built in parallel; make run starts with it
 	@$(IN_PARALLEL) $(RUN_NEEDS)
 .PHONY: run-needs
