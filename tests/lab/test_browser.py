@@ -84,6 +84,10 @@ def test_a_move_shows_on_the_robot_and_the_scope(page, lab_server):
       const dac = u.data[4].filter((v) => v !== null);
       return [Math.min(...dac), Math.max(...dac)].map((v) => (v - s.min) / (s.max - s.min)); })()""")
     assert lane[0] < lane[1] and 0.75 <= lane[0] and lane[1] <= 1, lane
+    counts = js(page, """(() => { const u = window.lab.scope.plot, s = u.scales.counts;
+      const counter = u.data[1].filter((v) => v !== null);
+      return [Math.min(...counter), Math.max(...counter)].map((v) => (v - s.min) / (s.max - s.min)); })()""")
+    assert 0 <= counts[0] and counts[1] <= 0.75, counts      # and the counter below it
 
 
 def breakpoint_row_in_the_panel(page):

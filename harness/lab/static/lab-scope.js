@@ -234,7 +234,8 @@ function rebuildPlot() {
   scope.plot = new uPlot({
     width: Math.max(100, r.width), height: Math.max(60, r.height),
     legend: { show: false }, series: [{}].concat(list), axes,
-    scales: Object.fromEntries([["x", { time: false }]].concat(scales.map((s, k) => [s, scaleOf(k)]))),
+    scales: Object.fromEntries([["x", { time: false }]].concat(
+      scales.map((s, k) => [s, scaleOf(k, Math.max(0, scales.length - 2))]))),
     cursor: { drag: { x: true, y: false, setScale: false }, points: { show: false } },
     hooks: {
       setSelect: [(u) => {           // a dragged span: zoom to it (the view holds still)
@@ -255,14 +256,21 @@ function rebuildPlot() {
   lab.dirty = true;
 }
 
-// The first two scales have an axis and the whole height. A third or fourth, read
-// with the cursors, gets a lane of its own, a quarter of the height from the top
-// down, as a scope's channel has its own position: the hunting servo's DAC code
-// swings full scale at every tick, and over the whole height its band hid the
-// counter and Desire.Pos drawn under it.
+// The first two scales have an axis. A third or fourth, read with the cursors, gets
+// a lane of its own, a quarter of the height from the top down, as a scope's channel
+// has its own position, and the first two keep the height below the lanes: the
+// hunting servo's DAC code swings full scale at every tick, and drawn over the
+// counter and Desire.Pos its band hid them.
 const LANE = 0.25, LANE_MARGIN = 0.02;
-function scaleOf(k) {
-  if (k < 2) return { auto: true };
+function scaleOf(k, lanes) {
+  if (k < 2) {
+    if (!lanes) return { auto: true };
+    const below = 1 - LANE * lanes;         // uPlot's own fit (10 % padding), stretched up
+    return { auto: true, range: (u, low, high) => {
+      const [min, max] = uPlot.rangeNum(low ?? 0, high ?? 1, 0.1, true);
+      return [min, min + (max - min) / below];
+    } };
+  }
   const top = 1 - LANE * (k - 2), bottom = top - LANE;      // fractions of the height
   return { auto: true, range: (u, low, high) => {
     const lo = low ?? 0, hi = high ?? 1, span = (hi - lo || 1) / (LANE - 2 * LANE_MARGIN);
