@@ -54,8 +54,12 @@ def test_echo_off_and_tty_setup_are_set_before_the_child_starts():
 
 
 def test_the_interrupt_key_signals_the_child_and_its_status_is_read():
-    child = Spawn(sys.executable, ["-c", "import time; print('up', flush=True); time.sleep(30)"],
-                  timeout=20)
+    # Short sleeps: a SIGINT that lands after print() returns and before one long
+    # sleep() starts is only acted on when that sleep ends (Python checks for signals
+    # between bytecodes, and a sleep is interrupted only by a signal that comes while
+    # it sleeps); under load it did, once in some 20 suite runs, after the 20 s limit.
+    child = Spawn(sys.executable, ["-c", "import time\nprint('up', flush=True)\n"
+                                   "while True: time.sleep(0.05)"], timeout=20)
     child.expect(b"up")
     child.sendintr()
     child.expect(pexpect.EOF)
