@@ -1,14 +1,12 @@
 """Whether processes a test started (and cannot wait for: not its children) have ended."""
 import time
 
+from harness.machine.key_feed import process_state
+
 
 def running(pid):
     """True while pid exists and is not a zombie."""
-    try:
-        with open(f"/proc/{pid}/stat") as f:
-            return f.read().rsplit(")", 1)[1].split()[0] != "Z"
-    except FileNotFoundError:
-        return False
+    return process_state(pid) not in ("Z", None)
 
 
 def ended_within(pids, seconds):

@@ -53,7 +53,8 @@ def shown(data):
     return data.translate(None, b"\x11\x13")
 
 
-def _state(pid):
+def process_state(pid):
+    """The state letter of process `pid` (R, S, T, Z ...; /proc's), None when it is gone."""
     try:
         with open(f"/proc/{pid}/stat") as stat:
             return stat.read().rsplit(")", 1)[1].split()[0]
@@ -71,7 +72,7 @@ def frozen(pid):
         return
     try:
         deadline = time.monotonic() + 1
-        while _state(pid) not in ("T", "t", "Z", None) and time.monotonic() < deadline:
+        while process_state(pid) not in ("T", "t", "Z", None) and time.monotonic() < deadline:
             time.sleep(0.0002)
         yield
     finally:

@@ -6,7 +6,6 @@ import pytest
 from selenium.webdriver.common.by import By
 
 from harness.analysis.trace import parse_rows
-from harness.machine.plant_rows import COLUMNS
 
 from labpage import ARTIFACTS, AnotherPage, assert_on_screen, click, connected, frames, \
     full_session, js, pace, pause, projector, run, serious_violations, terminal_spills, type_line, \

@@ -10,7 +10,7 @@ import pytest
 from harness.lab.launch import LabProcess
 from harness.machine.build import ROOT
 from tests.process_ends import ended_within
-from labpage import connected, full_session, js, type_line, wait_for
+from labpage import connected, full_session, type_line
 
 pytestmark = full_session
 
