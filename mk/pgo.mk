@@ -20,7 +20,7 @@
 # sim_instr, and relocR, ReadW, ReadE, GeteaW (the 11/23's memory management
 # relocating every access); guidance only inlines and lays out that code.
 # Measured again on 2026-11-29, the host noisy (one variant's runs 27-45 M/s): the
-# best-of figures gave 1.07-1.39, the round-by-round median 1.27-1.39; make test on
+# best-of figures gave 1.07-1.39, the round-by-round median 1.04-1.39; make test on
 # the guided build passed the same 879 tests in 75-76 CPU-s against 82-85 (39.7-41.4
 # s against 43.6-45.3 s wall), but the guided build from a clean tree takes 52 s of
 # wall time (56 CPU-s). Every CI run and a newcomer's first make run (whose console
