@@ -40,7 +40,7 @@ CONF
   # The Debian diff can be missing from the archive; apt then fails after the
   # orig tarball has arrived, which is all we use. Judge by the tarball.
   (cd "$dest" && apt-get source --download-only -qq "simh=$debver" 2>"$dest/apt/source.log") ||
-    echo "    (apt reported a missing file, see $dest/apt/source.log; only the orig tarball is needed)"
+    echo "==> simh source: apt reported a missing file (see $dest/apt/source.log); only the orig tarball is needed"
   if [ ! -f "$tarball" ]; then
     echo "error: apt-get source did not deliver simh_$version.orig.tar.gz" >&2
     echo "       (check that this machine's apt sources carry Debian's simh $debver)" >&2
