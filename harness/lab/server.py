@@ -513,17 +513,19 @@ async def serve(simulator, disk, symbols, port, speed, announce, read_only=False
     server = web.Server(make_app(lab, token, lambda: server.port))
     await server.start("127.0.0.1", port)
     lab.sim.start()
-    announce(f"http://127.0.0.1:{server.port}/?token={token}")
     loop = asyncio.get_running_loop()
+    # the ways out before the URL: a starter that reads it and dies at once sends its
+    # ^C (launch.py's parent-death signal) within a millisecond, which must find these
+    loop.add_signal_handler(signal.SIGINT, lambda: asyncio.ensure_future(lab.sim.close()))
+    loop.add_signal_handler(signal.SIGTERM, lambda: asyncio.ensure_future(lab.sim.close()))
+    loop.add_signal_handler(signal.SIGHUP, lambda: (quiet_stdout(),
+                                                    asyncio.ensure_future(lab.sim.close())))
+    announce(f"http://127.0.0.1:{server.port}/?token={token}")
     shell = shell_terminal.attach(loop, lab.shell_keys)
     if shell:
         lab.shell_echo = shell[0]
     tasks = [asyncio.ensure_future(lab.frames()), asyncio.ensure_future(lab.probes())]
     try:
-        loop.add_signal_handler(signal.SIGINT, lambda: asyncio.ensure_future(lab.sim.close()))
-        loop.add_signal_handler(signal.SIGTERM, lambda: asyncio.ensure_future(lab.sim.close()))
-        loop.add_signal_handler(signal.SIGHUP, lambda: (quiet_stdout(),
-                                                        asyncio.ensure_future(lab.sim.close())))
         await lab.done.wait()
         deaf_to_late_interrupts(loop)
         await lab.sent_all()                      # the last messages reach the pages
