@@ -1,6 +1,8 @@
 # mk/lab.mk: the lab bench (python -m harness lab; docs/lab.md).
 #   make lab              boot the FORTH and serve the page on 127.0.0.1 (prints the URL)
 #   make lab SPEED=full   start at full speed (real, x10, full); PORT=n another port
+#   make lab TIMED=1      on the 11/23's clock (SET CLK TIMED, build/pdp11-timed); the
+#                         page's clock button switches it
 #   make lab-assets       the page's libraries: xterm.js, pinned by harness/lab's
 #                         package-lock.json, installed by npm ci into build/lab
 #   make lab-browser      Debian's chromium and chromium-driver, for the browser tests
@@ -9,7 +11,7 @@
 #   make bench-lab        the lab's cost: CPU at real pace, instruction rate at full speed
 LAB_DIR   := $(BUILD)/lab
 LAB_STAMP := $(LAB_DIR)/node_modules/.stamp
-LAB_NEEDS := $(BUILD)/pdp11 $(BUILD)/kernel.lda $(BUILD)/kernel.map $(LAB_STAMP) venv
+LAB_NEEDS := $(BUILD)/pdp11 $(BUILD)/pdp11-timed $(BUILD)/kernel.lda $(BUILD)/kernel.map $(LAB_STAMP) venv
 
 $(LAB_STAMP): harness/lab/package.json harness/lab/package-lock.json
 	@command -v npm >/dev/null || bash mk/apt-need.sh nodejs npm
@@ -22,8 +24,8 @@ $(LAB_STAMP): harness/lab/package.json harness/lab/package-lock.json
 lab-assets: $(LAB_STAMP)  ## the lab page's pinned npm libraries (npm ci into build/lab)
 ALL_PRODUCTS += $(LAB_STAMP)
 
-lab: $(LAB_NEEDS) $(WORK_DSK)  ## the lab bench in a browser (SPEED=full PORT=8100): prints its URL
-	@$(PY) -m harness lab $(if $(PORT),--port $(PORT)) $(if $(SPEED),--speed $(SPEED))
+lab: $(LAB_NEEDS) $(WORK_DSK)  ## the lab bench in a browser (SPEED=full PORT=8100 TIMED=1): prints its URL
+	@$(PY) -m harness lab $(if $(PORT),--port $(PORT)) $(if $(SPEED),--speed $(SPEED)) $(if $(TIMED),--timed)
 
 # The browser tests skip, saying why, only where these cannot be installed.
 lab-browser:  ## install Debian's chromium and chromium-driver for the lab's tests

@@ -15,6 +15,14 @@ extern int32 clock_rate;                 /* instructions per simulated second */
 double clock_time (void);                /* simulated seconds since power-up */
 int32 clock_share (int32 per_second, int32 *acc);  /* next interval of an exact n/s series */
 void clock_rescale (UNIT *uptr, int32 old_rate);   /* keep an event's simulated time */
+/* An exact series of events, each counted from its predecessor's due time (time_base.c
+   says why): start it, then activate the unit n instructions after the last due time
+   (or the next of per_second a second); rescale when RATE changes. */
+typedef struct { int32 acc; double due; } clock_series;
+void clock_series_start (clock_series *s);
+void clock_series_activate (UNIT *uptr, clock_series *s, int32 n);
+void clock_series_next (UNIT *uptr, clock_series *s, int32 per_second);
+void clock_series_rescale (UNIT *uptr, clock_series *s, int32 old_rate);
 typedef void (*clock_rate_hook) (int32 old_rate);
 void clock_on_rate_change (clock_rate_hook before, clock_rate_hook after);
 void clock_set_rate (int32 rate);                  /* SET CLK RATE: hooks, new base */
@@ -27,6 +35,7 @@ void wall_pacer_drop (wall_pacer *p);              /* the next call takes a new 
 
 /* The KDF11-A's instruction times as the time base (kdf11_time.c, SET CLK TIMED). */
 extern int32 kdf11_timed;
+int kdf11_time_possible (void);                    /* this simulator's CPU prices (pdp11-timed) */
 t_stat kdf11_time_set (int on);
 
 /* The clock (kw11l.c): its part of a rate change. */

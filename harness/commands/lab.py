@@ -8,7 +8,7 @@ from harness.blocks.disk import DiskError
 from harness.commands.argtypes import absolute_path
 from harness.commands.console import ConsoleError, working_disk
 from harness.lab.server import NODE_MODULES, serve
-from harness.machine.build import KERNEL_MAP, PDP11
+from harness.machine.build import KERNEL_MAP, PDP11, PDP11_TIMED
 from harness.machine.kernel_layout import KernelMapError, read_kernel_map
 
 ERRORS = (ConsoleError, DiskError, KernelMapError)
@@ -21,7 +21,11 @@ the page on 127.0.0.1 only; open the URL it prints (it holds this session's
 token; the server opens no browser). Leave with BYE in the page's terminal (the
 FORTH FLUSHes its blocks, the disk is detached) or ^C here. While another
 simulator writes the disk (make run), the lab says who and exits 1;
---read-only attaches it beside that one."""
+--read-only attaches it beside that one.
+
+Simulated time is the instruction count (300 000 a second) unless --timed: then
+the 11/23's own clock, each instruction its KDF11-A time (SET CLK TIMED, on
+build/pdp11-timed), and the page's clock button switches between the two."""
 
 
 def configure(parser):
@@ -35,8 +39,10 @@ def configure(parser):
                         help="pace at start (default: the 11/23's real pace)")
     parser.add_argument("--read-only", action="store_true",
                         help="attach the disk read-only (beside a simulator writing it)")
-    parser.add_argument("--simulator", default=str(PDP11), type=absolute_path,
-                        help=argparse.SUPPRESS)
+    parser.add_argument("--timed", action="store_true",
+                        help="11/23 time: each instruction takes its KDF11-A time (SET CLK "
+                        "TIMED, on build/pdp11-timed), switchable in the page")
+    parser.add_argument("--simulator", type=absolute_path, help=argparse.SUPPRESS)
     parser.set_defaults(run=run)
 
 
@@ -49,6 +55,7 @@ def announce(url):
 
 def run(args):
     disk = working_disk(args.disk, args.read_only)
+    args.simulator = args.simulator or str(PDP11_TIMED if args.timed else PDP11)
     if not Path(args.simulator).is_file():
         raise ConsoleError(f"{args.simulator}: no simulator (run make)")
     if not (NODE_MODULES / "@xterm" / "xterm").is_dir():
@@ -57,7 +64,7 @@ def run(args):
     symbols = read_kernel_map(KERNEL_MAP)
     try:
         safe = asyncio.run(serve(args.simulator, disk, symbols, args.port, args.speed,
-                                    announce, args.read_only, block_listing))
+                                    announce, args.read_only, block_listing, args.timed))
     except OSError as err:
         raise ConsoleError(f"cannot serve on 127.0.0.1:{args.port}: {err.strerror}") from err
     if safe is None:

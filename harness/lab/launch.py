@@ -25,7 +25,7 @@ class LabProcess:
     A starter that dies without stop() takes the lab with it: the lab gets the ^C
     (SIGINT) it would have sent, and ends its simulator as a user's ^C does."""
 
-    def __init__(self, tmp, speed="x10"):
+    def __init__(self, tmp, speed="x10", timed=False):
         """Starts the lab; its URL is waited for when first asked (url, port, token),
         so a caller may start a browser meanwhile."""
         self.disk = disk = fresh_disk(tmp)
@@ -33,7 +33,8 @@ class LabProcess:
         with open(self.log, "w") as log:
             self.proc = subprocess.Popen(
                 ended_with_parent([sys.executable, "-m", "harness", "lab", "--port", "0",
-                                   "--speed", speed, "--disk", str(disk)], signal.SIGINT),
+                                   "--speed", speed, "--disk", str(disk)]
+                                  + (["--timed"] if timed else []), signal.SIGINT),
                 cwd=ROOT, stdout=log, stderr=subprocess.STDOUT)
         self._started = time.monotonic()
         self._served = None

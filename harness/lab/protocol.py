@@ -36,6 +36,7 @@ FROM_PAGE = {
     "take": {},                                  # take the keyboard
     "speed": {"v": ("real", "x10", "full")},
     "power": {"v": ("on", "off")},
+    "clock": {"v": ("count", "timed")},          # the time base (SET CLK TIMED)
     "pause": {},
     "run": {},
     "step": {},
@@ -128,6 +129,7 @@ DEVICE_COMMANDS = {
     "power": "on|off",        # the amplifier rack's switch (SET PLANT POWER)
     "panel": "[ADDR...|off]", # R rows: the 11/23's front panel (front_panel.py)
     "halt": "",               # to sim> at the next tick, paused or not
+    "clock": "count|timed",   # the time base (SET CLK TIMED), where the CPU prices
 }
 
 # Rows the device writes, one a line: kind -> its fields (a trailing "..." repeats).
@@ -135,7 +137,7 @@ DEVICE_ROWS = {
     "W": ("time_s", "tick", "w0", "..."),          # every reported tick: watched words
     "P": ("time_s", "axis", "..."),                # the plant trace's row (plant_rows.COLUMNS)
     "A": ("a0", "..."),                            # the watched addresses (octal)
-    "S": ("time_s", "state", "speed", "power"),    # after every command
+    "S": ("time_s", "state", "speed", "power", "clock", "timable"),   # after every command
     "M": ("addr", "w0", "..."),                    # a dump, up to 64 words a row
     "R": ("time_s", "r0", "..."),                  # the front panel (front_panel.py)
     "I": ("time_s", "vector=count", "..."),        # interrupts taken, with each R row

@@ -58,9 +58,10 @@ SEND_WAIT_S = 2.0                # leaving: at most this long for the last frame
 class Lab:
     """The simulator, the servo watch and the connected pages."""
 
-    def __init__(self, simulator, disk, symbols, speed="real", read_only=False, lister=None):
+    def __init__(self, simulator, disk, symbols, speed="real", read_only=False, lister=None,
+                 timed=False):
         self.sim = Simulator(simulator, disk, self.on_console, self.on_lab, self.on_ended,
-                             speed, page=self.to_pages, read_only=read_only,
+                             speed, page=self.to_pages, read_only=read_only, timed=timed,
                              watched=lambda: bool(self.pages))
         self.shell_echo = None           # the shell's terminal, when it types too
         self.watch = ServoWatch(symbols)
@@ -81,7 +82,7 @@ class Lab:
         self.scrollback = bytearray()
         self.rows = []                   # plant rows decoded for the next frame (feed.py)
         self.status = {"time": 0.0, "tick": 0, "state": "run", "speed": speed, "power": "off",
-                       "waiting": 0}
+                       "clock": "timed" if timed else "count", "timable": timed, "waiting": 0}
         self.servo = {}
         self.word_rows = WordRows()
         self.ticks = WordHistory(20 * TICKS_PER_FRAME)   # the words' changes, for the scope
@@ -212,8 +213,9 @@ class Lab:
         elif row.kind == "S":
             self.status["time"] = float(row.fields[0])
             self.status["state"] = row.fields[1]
-            if len(row.fields) > 3:
-                self.status["power"] = row.fields[3]
+            if len(row.fields) > 5:
+                self.status["power"], self.status["clock"] = row.fields[3:5]
+                self.status["timable"] = row.fields[5] == "1"
         elif row.kind == "E":
             print(f"[lab] the LAB device refused a command: {','.join(row.fields)}",
                   file=sys.stderr)
@@ -368,6 +370,12 @@ class Lab:
     def on_power(self, ws, message):
         self.sim.command(f"power {message['v']}")
 
+    def on_clock(self, ws, message):     # the time base: the count, or the 11/23's own
+        if message["v"] == "timed" and not self.status["timable"]:
+            raise protocol.Refused("the 11/23's clock needs the simulator that prices each "
+                                   "instruction: start the lab with --timed (make lab TIMED=1)")
+        self.sim.command(f"clock {message['v']}")
+
     def on_pause(self, ws, message):
         self.sim.command("pause")
 
@@ -505,11 +513,12 @@ def deaf_to_late_interrupts(loop):
     signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 
-async def serve(simulator, disk, symbols, port, speed, announce, read_only=False, lister=None):
+async def serve(simulator, disk, symbols, port, speed, announce, read_only=False, lister=None,
+                timed=False):
     """Run the lab until the user leaves; True if every UPDATEd block was written
     and the disk detached, None if the simulator exited by itself."""
     token = guard.new_token()
-    lab = Lab(simulator, disk, symbols, speed, read_only, lister)
+    lab = Lab(simulator, disk, symbols, speed, read_only, lister, timed)
     server = web.Server(make_app(lab, token, lambda: server.port))
     await server.start("127.0.0.1", port)
     lab.sim.start()

@@ -70,11 +70,13 @@ def _alive(pid):
     return True
 
 
-def boot_script(disk, lab_fifo, speed, kernel=KERNEL, read_only=False):
+def boot_script(disk, lab_fifo, speed, kernel=KERNEL, read_only=False, timed=False):
     """The lab's machine: the LAB device on its FIFO, the rack off as in make run
-    (the page has the switch)."""
-    return simh.boot_script(disk, kernel, setup=f"attach lab {lab_fifo}\n"
-                            f"set lab speed={speed}\n{RACK_OFF}\n", read_only=read_only)
+    (the page has the switch); timed: on the 11/23's clock (SET CLK TIMED, before
+    the LAB device's first tick is scheduled, so its ticks fall on the clock's)."""
+    return simh.boot_script(disk, kernel, setup=("set clk timed\n" if timed else "")
+                            + f"attach lab {lab_fifo}\nset lab speed={speed}\n{RACK_OFF}\n",
+                            read_only=read_only)
 
 
 class Simulator:
@@ -83,12 +85,12 @@ class Simulator:
     ended(safe: bool, or None when the simulator exited by itself)."""
 
     def __init__(self, simulator, disk, console, lab, ended, speed="real", page=None,
-                 read_only=False, watched=None):
+                 read_only=False, watched=None, timed=False):
         self.callbacks = console, lab, ended
         self.page = page or console               # the leaving report: the page's copy
         self.watched = watched or (lambda: True)  # whether a page looks (the FIFO's pace)
         self.simulator, self.disk, self.speed = simulator, disk, speed
-        self.read_only = read_only
+        self.read_only, self.timed = read_only, timed
         remove_stale()
         self.tmp = tempfile.TemporaryDirectory(prefix=TMP_PREFIX)
         (Path(self.tmp.name) / "lab.pid").write_text(str(os.getpid()))
@@ -118,7 +120,7 @@ class Simulator:
         self.ctl = os.open(tmp / "lab.ctl", os.O_RDWR | os.O_NONBLOCK)
         ini = tmp / "lab.ini"
         ini.write_text(boot_script(self.disk, lab_fifo, SPEEDS[self.speed],
-                                   read_only=self.read_only))
+                                   read_only=self.read_only, timed=self.timed))
         self.child = Spawn(str(self.simulator), [str(ini)], timeout=None,
                            dimensions=(24, 80), cwd=str(ROOT),
                            tty_setup=prompt_termios)

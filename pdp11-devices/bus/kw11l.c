@@ -63,7 +63,7 @@ extern t_bool sim_idle_enab;            /* sim_timer.c: SET CPU IDLE */
 #define TICKS_PER_S 60
 
 static int32 lks;
-static int32 tick_acc;                  /* remainder of the exact tick series */
+static clock_series ticks_due;          /* the exact tick series (time_base.c) */
 static uint32 ticks;                    /* ticks since power-up */
 static int realtime;                    /* SET CLK REALTIME */
 static int32 idle_speed = 1;            /* SET CLK IDLESPEED: idle ticks' pace */
@@ -191,7 +191,7 @@ static t_stat kwl_svc (UNIT *uptr)
     lks |= LKS_MON;
     if (lks & LKS_IE)
         SET_INT (CLK);
-    sim_activate (uptr, clock_share (TICKS_PER_S, &tick_acc));
+    clock_series_next (uptr, &ticks_due, TICKS_PER_S);
     return SCPE_OK;
 }
 
@@ -200,8 +200,10 @@ static t_stat kwl_reset (DEVICE *dptr)
     lks = 0;
     CLR_INT (CLK);
     tmr_poll = tmxr_poll = clock_rate / TICKS_PER_S;
-    if (!sim_is_active (&kwl_unit))              /* power-up: start the series */
-        sim_activate (&kwl_unit, clock_share (TICKS_PER_S, &tick_acc));
+    if (!sim_is_active (&kwl_unit)) {            /* power-up: start the series */
+        clock_series_start (&ticks_due);
+        clock_series_next (&kwl_unit, &ticks_due, TICKS_PER_S);
+    }
     return SCPE_OK;
 }
 
@@ -219,8 +221,7 @@ static t_stat kwl_set_rate (UNIT *uptr, int32 val, char *cptr, void *desc)
 void kwl_rate_changed (int32 old_rate)
 {
     tmr_poll = tmxr_poll = clock_rate / TICKS_PER_S;
-    clock_rescale (&kwl_unit, old_rate);         /* the next tick keeps its time */
-    tick_acc = 0;
+    clock_series_rescale (&kwl_unit, &ticks_due, old_rate);   /* the next tick keeps its time */
 }
 
 static t_stat kwl_set_realtime (UNIT *uptr, int32 val, char *cptr, void *desc)

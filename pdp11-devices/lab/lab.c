@@ -17,9 +17,13 @@
                                plant trace's row (plant_dev_write_row; SHOW
                                PLANT LAYOUT names its columns)
      A,a0,a1,...               the watched addresses (octal), when they change
-     S,time_s,state,speed,power
+     S,time_s,state,speed,power,clock,timable
                                state run|pause, the amplifier rack on|off
-                               (PLANT POWER), after every command
+                               (PLANT POWER), the time base count|timed (SET
+                               CLK TIMED: the KDF11-A's instruction times),
+                               timable 1 when this simulator's CPU prices
+                               instructions (build/pdp11-timed), else 0;
+                               after every command and time base change
      M,addr,w0,...             memory (addr octal, up to 64 words a row): a dump
      R,time_s,r0,...,r7,psw,(r4),lks,csr,outbuf,dac0,...,dac3,m0,...
                                the front panel, at every reported tick once
@@ -52,6 +56,10 @@
                  answered while paused, when ^E waits; CONT goes on (still
                  paused if it was). Instructions STEPped there pass the next
                  tick without pausing (the front panel's step never hangs)
+     clock count|timed  the time base, as SET CLK NOTIMED|TIMED, between two
+                 ticks: simulated time stays continuous, the pace (speed X)
+                 is in the new base's seconds; timed is refused where the
+                 CPU does not price instructions (build/pdp11)
    A bad command is answered by an E row and changes nothing.
 
    Reporting: up to ten times the 11/23's pace every tick is reported. Faster
@@ -104,7 +112,7 @@ static double speed;                    /* 0 = full speed */
 static int paused, steps, halting;
 static int halted;                      /* at sim> by `halt`: STEP there passes the next tick */
 extern int32 sim_step;                  /* scp.c: instructions a STEP has left, 0 otherwise */
-static int32 sample_acc;
+static clock_series samples_due;         /* the sample series (time_base.c) */
 static int sub;                         /* sample within the tick, 0 at the tick */
 static int reporting;                   /* this tick's rows are written */
 static double reported_wall;            /* when the last reported tick was */
@@ -163,8 +171,9 @@ static FILE *out (void)
 static void say_state (void)
 {
     if (out ())
-        fprintf (out (), "S,%.6f,%s,%g,%s\n", clock_time (), paused ? "pause" : "run", speed,
-                 plant_dev_powered () ? "on" : "off");
+        fprintf (out (), "S,%.6f,%s,%g,%s,%s,%d\n", clock_time (), paused ? "pause" : "run", speed,
+                 plant_dev_powered () ? "on" : "off", kdf11_timed ? "timed" : "count",
+                 kdf11_time_possible ());
 }
 
 static void say_watch (void)
@@ -275,6 +284,18 @@ static const char *dump (char *args)
     return NULL;
 }
 
+static const char *set_clock (const char *args)
+{
+    int timed = strcmp (args, "timed") == 0;
+    if (!timed && strcmp (args, "count") != 0)
+        return "clock takes count or timed";
+    if (timed && !kdf11_time_possible ())
+        return "clock timed needs the CPU that prices instructions: build/pdp11-timed "
+               "(python -m harness lab --timed)";
+    kdf11_time_set (timed);             /* the rate hooks: this device's rebase() too */
+    return NULL;
+}
+
 static void command (char *line)
 {
     const char *why = NULL;
@@ -300,9 +321,11 @@ static void command (char *line)
         why = set_panel (args);
     else if (strcmp (line, "halt") == 0)
         halting = 1;
+    else if (strcmp (line, "clock") == 0)
+        why = set_clock (args);
     else if (*line)
         why = "commands: speed X, pause, run, step, watch ADDR..., dump ADDR N, power on|off, "
-              "panel [ADDR...|off], halt";
+              "panel [ADDR...|off], halt, clock count|timed";
     if (why && out ())
         fprintf (out (), "E,%s\n", why);
     say_state ();
@@ -396,19 +419,20 @@ static void wait_while_paused (int stepping)
    stays exact and every look falls on a tick). */
 static void schedule (UNIT *uptr)
 {
-    int32 n = clock_share (TICKS_PER_S * SUBSAMPLES, &sample_acc);
+    int32 *acc = &samples_due.acc;
+    int32 n = clock_share (TICKS_PER_S * SUBSAMPLES, acc);
     if (!reporting) {
         while (sub < SUBSAMPLES - 1) {              /* to the next tick */
-            n += clock_share (TICKS_PER_S * SUBSAMPLES, &sample_acc);
+            n += clock_share (TICKS_PER_S * SUBSAMPLES, acc);
             sub++;
         }
         for (int32 k = 1; k < skip; k++) {          /* and over skip - 1 more */
             for (int i = 0; i < SUBSAMPLES; i++)
-                n += clock_share (TICKS_PER_S * SUBSAMPLES, &sample_acc);
+                n += clock_share (TICKS_PER_S * SUBSAMPLES, acc);
             tick_no++;
         }
     }
-    sim_activate (uptr, n);
+    clock_series_activate (uptr, &samples_due, n);
 }
 
 static t_stat lab_svc (UNIT *uptr)
@@ -447,9 +471,11 @@ static t_stat lab_svc (UNIT *uptr)
 
 void lab_rate_changed (int32 old_rate)
 {
-    clock_rescale (&lab_unit, old_rate);        /* the next sample keeps its time */
-    sample_acc = 0;
+    clock_series_rescale (&lab_unit, &samples_due, old_rate);   /* the next sample keeps its time */
     rebase ();
+    say_state ();                               /* SET CLK TIMED at sim>: the page's clock too */
+    if (out ())
+        flush_all ();
 }
 
 static t_stat lab_attach (UNIT *uptr, char *cptr)
@@ -470,14 +496,14 @@ static t_stat lab_attach (UNIT *uptr, char *cptr)
     free (ctl);
     tick_no = reported_tick = 0;
     skip = 1;
-    sample_acc = 0;
     sub = 0;
     reporting = 1;
     cmd_len = 0;
     rebase ();
     say_watch ();
     say_state ();
-    sim_activate (uptr, clock_share (TICKS_PER_S * SUBSAMPLES, &sample_acc));
+    clock_series_start (&samples_due);
+    clock_series_next (uptr, &samples_due, TICKS_PER_S * SUBSAMPLES);
     return SCPE_OK;
 }
 

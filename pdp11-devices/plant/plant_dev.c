@@ -64,7 +64,7 @@ gripper robot_gripper;
 #define SEL_GRIPPER PLANT_AXES
 static int sel_axis = -1;               /* axis (or SEL_GRIPPER) named earlier in this SET command */
 static int32 sample_hz = DEFAULT_SAMPLE;
-static int32 sample_acc;
+static clock_series samples_due;         /* the trace's sample series (time_base.c) */
 static void (*lines_changed) (void);    /* the bus device whose REQ lines the plant drives */
 
 static t_stat plant_svc (UNIT *uptr);
@@ -218,8 +218,7 @@ void plant_dev_rate_changing (int32 old_rate)  /* still in the old time */
 
 void plant_dev_rate_changed (int32 old_rate)
 {
-    clock_rescale (&plant_unit, old_rate);
-    sample_acc = 0;
+    clock_series_rescale (&plant_unit, &samples_due, old_rate);
 }
 
 void plant_dev_command_done (void)
@@ -230,9 +229,9 @@ void plant_dev_command_done (void)
 static void schedule_sample (void)
 {
     sim_cancel (&plant_unit);
-    sample_acc = 0;
+    clock_series_start (&samples_due);
     if ((plant_unit.flags & UNIT_ATT) && sample_hz > 0)
-        sim_activate (&plant_unit, clock_share (sample_hz, &sample_acc));
+        clock_series_next (&plant_unit, &samples_due, sample_hz);
 }
 
 static t_stat plant_svc (UNIT *uptr)
@@ -242,7 +241,7 @@ static t_stat plant_svc (UNIT *uptr)
     plant_dev_catch_up ();
     for (int i = 0; i < PLANT_AXES; i++)
         trace_row (i);
-    sim_activate (uptr, clock_share (sample_hz, &sample_acc));
+    clock_series_next (uptr, &samples_due, sample_hz);
     return SCPE_OK;
 }
 

@@ -32,9 +32,14 @@ static int32 rate_before;               /* RATE to return to at NOTIMED */
 /* defined by the patch: absent (null) in a simulator whose CPU is SIMH's own */
 extern const int32 kdf11_cpu_prices __attribute__ ((weak));
 
+int kdf11_time_possible (void)
+{
+    return &kdf11_cpu_prices != NULL;
+}
+
 t_stat kdf11_time_set (int on)
 {
-    if (on && &kdf11_cpu_prices == NULL) {
+    if (on && !kdf11_time_possible ()) {
         printf ("TIMED needs the CPU that prices instructions: build/pdp11-timed\n");
         return SCPE_NOFNC;
     }

@@ -10,10 +10,12 @@ from labpage import ARTIFACTS
 
 @pytest.fixture(scope="module")
 def lab_server(request, tmp_path_factory):
-    """A lab server for the module, at the module's LAB_SPEED (default LabProcess's, x10);
-    stopped with ^C unless a test ended it (BYE)."""
+    """A lab server for the module, at the module's LAB_SPEED (default LabProcess's, x10),
+    on the 11/23's clock if its LAB_TIMED says so; stopped with ^C unless a test ended
+    it (BYE)."""
     speed = getattr(request.module, "LAB_SPEED", None)
-    server = LabProcess(tmp_path_factory.mktemp("lab"), **({"speed": speed} if speed else {}))
+    server = LabProcess(tmp_path_factory.mktemp("lab"), **({"speed": speed} if speed else {}),
+                        timed=getattr(request.module, "LAB_TIMED", False))
     yield server
     status = server.stop()
     assert status == 0, f"the lab exited with {status}:\n{server.text()}"

@@ -31,6 +31,10 @@ def test_the_terminal_answers(page):
     violations = serious_violations(page)            # before 1000 LOAD: no servo data yet
     assert not violations, violations
     assert breakpoint_row_in_the_panel(page)          # under the servo table's first note
+    clock = page.find_element(By.ID, "clock")          # build/pdp11: the count, and why
+    assert clock.text == "by count" and not clock.is_enabled()
+    assert "--timed" in clock.get_dom_attribute("title")
+    assert page.find_element(By.ID, "simtick").text.endswith("\u00b7 by count")
 
 
 def test_a_move_shows_on_the_robot_and_the_scope(page, lab_server):

@@ -10,7 +10,7 @@ import pytest
 from harness.lab.protocol import DEVICE_COMMANDS, DEVICE_ROWS, Refused, device_command, \
     device_help
 from harness.machine import simh
-from harness.machine.build import KERNEL, ROOT, fresh_disk
+from harness.machine.build import KERNEL, PDP11_TIMED, ROOT, fresh_disk
 from harness.machine.plant_rows import COLUMNS
 
 TYPED = "1000 LOAD\rSet.Up.Robot\r800 800 400 0 Abs.Move\r"
@@ -40,7 +40,7 @@ def test_rows_and_commands(tmp_path, ctl):
                         "detach lab\n")
     assert "LAB, running, speed=10x, 2 words watched: 140000=001234 140002=177777" in out_text
     text = out.read_text()
-    assert text.startswith("A\nS,0.000000,run,0,on\n")    # at the attach, before SET
+    assert text.startswith("A\nS,0.000000,run,0,on,count,0\n")   # at the attach, before SET
     assert rows(out, "A") == [["140000", "140002"]]
     assert rows(out, "M") == [["140000", str(0o1234), "65535"]]
     assert [e[0] for e in rows(out, "E")] == [
@@ -124,6 +124,41 @@ def test_ticks_keep_their_simulated_times_when_rate_changes(tmp_path):
     times = [s[0] for s in rows(out, "W")]
     assert times == ["0.016667", "0.033333", "0.050000", "0.066667",
                      "0.083333", "0.100000", "0.116667", "0.133333"]
+
+
+def test_the_clock_command_switches_to_the_11_23s_time_and_back(tmp_path, ctl):
+    """`clock timed|count` (the page's clock button): SET CLK TIMED between two
+    ticks, simulated time continuous; the S rows say which base, and whether this
+    simulator can price instructions."""
+    out = tmp_path / "lab"
+    ctl("clock timed\nclock count\nclock timed\n")      # read at the first tick
+    shown = simh.run(f"attach rl0 {fresh_disk(tmp_path)}\nload {KERNEL}\nattach lab {out}\n"
+                     f"set lab speed=10\nstep {2 * 13_333_333}\nshow clk\ndetach lab\n",
+                     simulator=PDP11_TIMED, keyboard="1000 LOAD\r")
+    bases = [s[4:] for s in rows(out, "S")]          # after each command, and each change
+    assert [b for i, b in enumerate(bases) if i == 0 or b != bases[i - 1]] == [
+        ["count", "1"], ["timed", "1"], ["count", "1"], ["timed", "1"]]
+    assert not rows(out, "E")
+    assert "rate=13333333 units" in shown                  # the KDF11-A's 75 ns units
+    # two seconds of 1000 LOAD in 11/23 time: each tick on its 1/60 s, late by at most
+    # what is left of the instruction that crosses it (time_base.c's clock_series)
+    times = [float(s[0]) for s in rows(out, "W")]
+    assert len(times) >= 119
+    late = [t - (k + 1) / 60 for k, t in enumerate(times)]
+    assert -1e-6 < min(late) and max(late) < 0.0005, (min(late), max(late))   # 6 decimals
+
+
+def test_the_clock_command_is_refused_where_the_cpu_does_not_price(tmp_path, ctl):
+    """build/pdp11 keeps SIMH's CPU (mk/devices.mk): `clock timed` is refused with where
+    to find the 11/23's clock, and the time base stays the count."""
+    out = tmp_path / "lab"
+    ctl("clock timed\nclock fast\nclock count\n")
+    shown = simh.run(f"load {KERNEL}\nattach lab {out}\nstep 11000\nshow clk\ndetach lab\n")
+    assert [e[0] for e in rows(out, "E")] == [
+        "clock timed needs the CPU that prices instructions: build/pdp11-timed "
+        "(python -m harness lab --timed)", "clock takes count or timed"]
+    assert {tuple(s[4:]) for s in rows(out, "S")} == {("count", "0")}
+    assert "rate=300000 instructions/s" in shown
 
 
 def test_panel_rows_show_registers_psw_and_device_registers(tmp_path, ctl):

@@ -266,3 +266,22 @@ def test_a_move_waiting_on_the_rack_off_gets_a_hint(lab_server):
         await page.until(r"interrupted", start)
         return text
     assert "Move.Complete? waits for ever" in session(lab_server, steps)
+
+
+def test_the_11_23s_clock_needs_the_simulator_that_prices(lab_server):
+    """A lab on build/pdp11 (SIMH's own CPU, mk/devices.mk) keeps the count: the page's
+    clock button is answered with where the 11/23's clock is (--timed), and SET CLK
+    TIMED at its sim> says the same of the simulator; the time base stays the count."""
+    async def steps(page):
+        hello = next(m for m in page.client.messages if m["t"] == "hello")
+        assert hello["status"]["clock"] == "count" and hello["status"]["timable"] is False
+        await page.send({"t": "clock", "v": "timed"})
+        refused = await page.message(lambda m: m["t"] == "error")
+        await to_sim(page)
+        said = await page.at_sim("set clk timed", r"TIMED needs[^\r]*")
+        assert "rate=300000 instructions/s" in await page.at_sim("show clk", r"CLK, [^\r]*")
+        await cont(page)
+        return refused["why"], said
+    why, said = session(lab_server, steps)
+    assert "--timed" in why and "make lab TIMED=1" in why
+    assert "build/pdp11-timed" in said

@@ -31,6 +31,19 @@ def test_two_timed_runs_give_the_same_transcript_and_trace(tmp_path):
     assert int(ticks) == int(float(seconds) * 60)      # a tick every 1/60 s of 11/23 time
 
 
+def test_ticks_stay_on_the_11_23s_time_through_1000_load(tmp_path):
+    """Timed, an event runs after the instruction that crosses its time, and SIMH's
+    queue hands that lateness on to every event behind it: the KW11-L was once a tick
+    short after `1000 LOAD` (260 in 4.35 s). Its series counts from due times now
+    (time_base.c's clock_series)."""
+    script = tmp_path / "load.script"
+    script.write_text("1000 LOAD\n#simh show clk\n")
+    assert main(["run", str(script), "--timed", "--out", str(tmp_path)]) == 0
+    shown = (tmp_path / "load.transcript").read_text()
+    ticks, seconds = re.search(r"(\d+) ticks, time=([\d.]+)s", shown).groups()
+    assert int(ticks) == int(float(seconds) * 60) > 200
+
+
 def test_a_timed_word_costs_what_timing_prices(tmp_path):
     definitions = timed_bench.DEFINITIONS[:2] + [
         ": B-PASS ( -- ) 6 PRIORITY! MARK 200 0 DO I 7 * 3 / DROP LOOP END-MARK 0 PRIORITY! ;"]

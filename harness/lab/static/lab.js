@@ -22,7 +22,7 @@ const send = (message) => socket.readyState === 1 && socket.send(JSON.stringify(
 // The messages both ways are harness/lab/protocol.py's (tests check these against it).
 
 const lab = {                      // everything the page knows; window.lab for tests
-  stops: {}, status: { time: 0, tick: 0, state: "run", speed: "real", power: "off" },
+  stops: {}, status: { time: 0, tick: 0, state: "run", speed: "real", power: "off", clock: "count" },
   servo: {}, perAxis: [], single: [], traces: [], latest: [],
   rowsSeen: 0, ended: false, connected: false,
   keyboard: { holder: null, you: false }, outbox: "", room: 4096, errors: [],
@@ -206,11 +206,14 @@ document.getElementById("pause").addEventListener("click", () =>   // at sim> (a
 document.getElementById("step").addEventListener("click", () => send({ t: "step" }));
 document.getElementById("power").addEventListener("click", () =>
   send({ t: "power", v: lab.status.power === "on" ? "off" : "on" }));
+document.getElementById("clock").addEventListener("click", () =>
+  send({ t: "clock", v: lab.status.clock === "timed" ? "count" : "timed" }));
 
 function drawStatus() {
   const s = lab.status;
   put(document.getElementById("simtime"), `${s.time.toFixed(3)} s`);
-  put(document.getElementById("simtick"), `tick ${s.tick} \u00b7 60 Hz`);
+  const timed = s.clock === "timed";   // what a simulated second is: docs/plots.md
+  put(document.getElementById("simtick"), `tick ${s.tick} \u00b7 ${timed ? "11/23 time" : "by count"}`);
   if (!lab.ended) {
     const speedText = { real: "\u00d71", x10: "\u00d710", full: "FULL" }[s.speed] || "";
     if (s.prompt) setBadge("pause", "STOPPED sim>");   // SIMH has the machine stopped
@@ -224,9 +227,27 @@ function drawStatus() {
     `${s.power === "on" ? "off" : "on"} (SET PLANT POWER)`);
   putAttribute(power, "aria-pressed", String(s.power === "on"));
   power.classList.toggle("on", s.power === "on");
+  drawClock(s, timed);
   typedAhead.status(s);
   document.querySelectorAll("#speeds button").forEach((b) =>
     b.classList.toggle("on", b.dataset.speed === s.speed));
+}
+
+// The time base's switch: the instruction count (300 000 a simulated second) or the
+// 11/23's own clock (each instruction its KDF11-A time), where the simulator prices.
+function drawClock(s, timed) {
+  const clock = document.getElementById("clock");
+  put(clock, timed ? "11/23 time" : "by count");
+  putAttribute(clock, "aria-pressed", String(timed));
+  clock.classList.toggle("on", timed);
+  if (clock.disabled === !!s.timable) clock.disabled = !s.timable;
+  putAttribute(clock, "title", !s.timable
+    ? "simulated time is the instruction count, 300 000 a second; the 11/23's own clock " +
+      "needs the simulator that prices each instruction: start the lab with --timed (make lab TIMED=1)"
+    : timed ? "each instruction takes its KDF11-A time (SET CLK TIMED): click for the count, " +
+              "300 000 instructions a second"
+            : "simulated time is the instruction count, 300 000 a second: click for the 11/23's " +
+              "own clock, each instruction its KDF11-A time (SET CLK TIMED)");
 }
 
 // ---- canvases ----------------------------------------------------------------------------
