@@ -33,7 +33,7 @@ products: $(ALL_PRODUCTS)  ## what all builds, one job at a time unless make is 
 # (PYTHONDONTWRITEBYTECODE), and written before the workers start, once: the
 # tests start the harness in hundreds of processes.
 TEST_WORKERS ?= $(shell echo $$(( $$(nproc) + 1 )))
-test: all venv  ## the test suite (pytest, in parallel; browser sessions kept short), about 40 s on an idle 2-core host, as fast as its CPU (879 tests; README)
+test: all venv  ## the test suite (pytest, in parallel; browser sessions kept short), about 40 s on an idle 2-core host, as fast as its CPU (884 tests; README)
 	@env -u PYTHONDONTWRITEBYTECODE $(PY) -m compileall -q harness tests > /dev/null
 	@env -u PYTHONDONTWRITEBYTECODE $(PY) -m pytest -q -rs -n $(TEST_WORKERS) --dist loadscope tests
 
