@@ -18,10 +18,10 @@ Variants:
               runs did before: SIMH tests every instruction's address)
   guided      build/pdp11-guided (mk/pgo.mk), the CUE device"""
 import re
-import statistics
 import tempfile
 import time
 
+from harness.bench.paired import per_round
 from harness.machine.build import BUILD, fresh_disk
 from harness.machine.scripted_machine import ScriptedMachine
 
@@ -69,9 +69,9 @@ def rates(rounds=ROUNDS):
 def ratio(runs, a, b):
     """a against b, best against best, and round by round: 'best 1.21x; per round
     median 1.18x (1.02-1.40)'."""
-    each = [x / y for x, y in zip(runs[a], runs[b])]
+    median, low, high = per_round(runs[a], runs[b])
     return (f"best {max(runs[a]) / max(runs[b]):.2f}x; per round median "
-            f"{statistics.median(each):.2f}x ({min(each):.2f}-{max(each):.2f})")
+            f"{median:.2f}x ({low:.2f}-{high:.2f})")
 
 
 def report():

@@ -11,14 +11,17 @@
    CPU second of the simulator (goal: at most 10 % lower), the CPU the server and
    Chromium take meanwhile; and build/pdp11 with the LAB device attached
    (writing to /dev/null) against without: the device's own cost.
-Figures depend on the host and on what else runs on it: each full-speed figure
-is the best of lab_workload.REPEATS runs.
+Figures depend on the host and on what else runs on it (this one's speed was
+seen to drift by a fifth within a minute): each full-speed figure is printed as
+the best of lab_workload.REPEATS runs and as the median of the rounds' pairs,
+with their spread (paired.py); the goal is judged on the median.
 """
 import tempfile
 import time
 from pathlib import Path
 
 from harness.bench import lab_workload as workload
+from harness.bench.paired import per_round
 from harness.lab.launch import LabProcess, have_browser, headless_browser
 from harness.machine.build import RATE
 
@@ -134,6 +137,14 @@ def drop(lab, alone):
     return 100 * (1 - lab / alone)
 
 
+def round_drops(runs, key, base="alone", other="lab"):
+    """The rounds' drops of `other` against `base` (key: a Run's seconds, wall or
+    the simulator's CPU; fewer seconds for the same instructions is faster):
+    'median +4.2 % (-1.0 to +9.8)'."""
+    median, low, high = per_round([key(r) for r in runs[base]], [key(r) for r in runs[other]])
+    return f"median {drop(median, 1):+.1f} % ({drop(high, 1):+.1f} to {drop(low, 1):+.1f})"
+
+
 def main():
     if not have_browser():
         print("bench-lab: skipped: Debian's chromium and chromium-driver are not installed "
@@ -173,11 +184,14 @@ def print_full_speed(instructions, runs):
     print(f"full speed, {workload.WORK!r} ({instructions / 1e6:.1f} M instructions, "
           f"{instructions / RATE:.0f} simulated s), typed to ok, best of {len(lab)} "
           "(interleaved: alone, device, lab):")
+    wall, cpu = (lambda r: r.wall), (lambda r: r.cpu["simulator"])
     print(f"  per wall second: lab + page {lab_wall / 1e6:.1f} M/s, build/pdp11 alone "
-          f"{alone_wall / 1e6:.1f} M/s: {drop(lab_wall, alone_wall):+.1f} % (goal <= 10 %); "
+          f"{alone_wall / 1e6:.1f} M/s: best against best {drop(lab_wall, alone_wall):+.1f} %, "
+          f"round by round {round_drops(runs, wall)} (goal <= 10 %); "
           f"runs {fmt(r.wall for r in lab)} s against {fmt(r.wall for r in alone)} s")
     print(f"  per CPU second of the simulator: {lab_cpu / 1e6:.1f} against "
-          f"{alone_cpu / 1e6:.1f} M: {drop(lab_cpu, alone_cpu):+.1f} %")
+          f"{alone_cpu / 1e6:.1f} M: best against best {drop(lab_cpu, alone_cpu):+.1f} %, "
+          f"round by round {round_drops(runs, cpu)}")
     print(f"  % of one core meanwhile (fastest runs): lab: simulator "
           f"{100 * with_lab.share('simulator'):.0f}, server {100 * with_lab.share('server'):.0f}, "
           f"Chromium {100 * with_lab.share('chromium'):.0f}; alone (the lab paused): simulator "
@@ -185,7 +199,9 @@ def print_full_speed(instructions, runs):
           f"Chromium {100 * without.share('chromium'):.0f}")
     print(f"  the LAB device alone (attached, rows to /dev/null, no server or page): "
           f"{device_wall / 1e6:.1f} M/s, {device_cpu / 1e6:.1f} M per CPU second: "
-          f"{drop(device_wall, alone_wall):+.1f} % and {drop(device_cpu, alone_cpu):+.1f} %")
+          f"{drop(device_wall, alone_wall):+.1f} % and {drop(device_cpu, alone_cpu):+.1f} %; "
+          f"round by round {round_drops(runs, wall, other='device')} and "
+          f"{round_drops(runs, cpu, other='device')}")
 
 
 def fmt(values):
