@@ -10,9 +10,10 @@
 # SIMH uses (see its header), and pdp11_cpu.c, compiled again with gcc allowed to
 # inline larger functions (CPU_INLINE): the FORTH runs with the 11/23's memory
 # management on, so every access goes through relocR, which -O2 leaves a call
-# (perf: relocR 25 % of a scripted run, ReadE 10 %); inlined into sim_instr, the
-# FORTH's loops ran in 0.83 of the CPU time (farm-bench, 6 pairs, median; 0.76-1.0),
-# the same instructions executed, the same transcripts and traces.
+# (perf: relocR 25 % of a scripted run, ReadE 10 %); inlined into sim_instr, an
+# empty DO LOOP ran in 0.83 of the CPU time and the Sieve with the servo in 0.95
+# (farm-bench, medians of pairs; 0.76-1.01 and 0.84-1.24: a noisy host), make test
+# in about 5 % less; the same instructions executed, the same transcripts and traces.
 # build/pdp11-timed is the one exception: the same simulator with a copy of
 # pdp11_cpu.c patched by pdp11-devices/simh/pdp11_cpu_kdf11_time.patch, for SET
 # CLK TIMED (11/23 time: SIMH's CPU loop has no hook for a per-instruction time;

@@ -25,7 +25,9 @@
 # s against 43.6-45.3 s wall), but the guided build from a clean tree takes 52 s of
 # wall time (56 CPU-s). Every CI run and a newcomer's first make run (whose console
 # is paced to the wall clock anyway) would pay that to save 3-5 s a make test: it
-# stays PGO=1. The build is reproducible: rebuilt from clean, byte for byte the same.
+# stays opt-in (make PGO=1). The build is reproducible: rebuilt from clean, byte for
+# byte the same. Since the plain build inlines relocR and ReadE itself (CPU_INLINE,
+# mk/devices.mk), guided against plain on the Sieve: 1.03 (0.84-1.49), round by round.
 # `make bench-devices` builds and times it.
 PGO ?= 0
 # both passes at -O3: the profile is read after the early inliner, whose choices

@@ -14,8 +14,6 @@ import re
 import sys
 import tempfile
 
-import pexpect
-
 from harness.bench.protection_cost import cost
 from harness.machine.build import RATE, ROOT, fresh_disk
 from harness.machine.machine import OK, SIMULATOR, Machine
@@ -78,17 +76,6 @@ FREE_BEFORE = (16420, 14392)
 TIME = re.compile(r"Time:\s+(\d+)")
 
 
-def resume(m):
-    """Leave the sim> prompt. SIMH flushes console input when it switches the
-    terminal back to run mode, so poke with empty lines until one is answered."""
-    m.child.sendline("cont")
-    for _ in range(100):
-        m.child.send("\r")
-        if m.child.expect([OK, pexpect.TIMEOUT], timeout=0.2) == 0:
-            break
-    m.send(".( sync)")
-
-
 def count(m, word):
     """Instructions between the two MARK stops while `word` runs; the
     breakpoint's actions print SHOW TIME and continue."""
@@ -109,12 +96,10 @@ def start_counting(m, setup):
     m.send("OCTAL")
     marks = [m.send(f"' {w} U.").split()[0] for w in ("MARK", "END-MARK")]
     m.send("DECIMAL")
-    m.child.sendcontrol("e")  # to the sim> prompt
-    m.child.expect("sim> ")
+    m.to_sim()
     for mark in marks:  # two words: SIMH does not stop twice in a row at one PC
-        m.child.sendline(f"break {mark};show time;cont")
-        m.child.expect("sim> ")
-    resume(m)
+        m.simh(f"break {mark};show time;cont")
+    m.cont()
     return count(m, "B-EMPTY")
 
 
@@ -138,11 +123,9 @@ def main():
         docol = count(m, "B-DOCOL") - empty
         exit_ = count(m, "B-EXIT") - empty
         call = count(m, "B-CALL") - empty
-        m.child.sendcontrol("e")
-        m.child.expect("sim> ")
-        m.child.sendline("nobreak all")
-        m.child.expect("sim> ")
-        resume(m)
+        m.to_sim()
+        m.simh("nobreak all")
+        m.cont()
         primes = m.send("SIEVE .").split()[0]
         fib = m.send("20 FIB .").split()[0]
     print(f"FORTH benchmarks on {SIMULATOR.relative_to(ROOT)}, simulated seconds at "

@@ -11,8 +11,6 @@ interrupts included.
 import os
 import re
 import time
-
-import pexpect
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -91,37 +89,17 @@ class Bare:
                                extra_commands=f"{IDLE}\n{extra}")
         for line in SETUP + (DEFINE,):
             self.machine.send(line)
-        self._hold()
-
-    def _hold(self):
-        """To sim> (^E): the simulator waits for a command and uses no CPU."""
-        self.machine.child.send("\x05")
-        self.machine.child.expect("sim> ")
-        self.machine.at_sim_prompt = True        # close() quits from here
-
-    def _resume(self):
-        """CONT, then empty lines until the FORTH answers one: SIMH discards what
-        reaches the terminal before the machine runs again."""
-        self.machine.child.send("cont\r")
-        self.machine.at_sim_prompt = False
-        for _ in range(40):
-            self.machine.child.send("\r")
-            try:
-                self.machine.child.expect(" ok\r\n", timeout=0.25)
-                return
-            except pexpect.TIMEOUT:
-                pass
-        raise RuntimeError("bench-lab: the FORTH did not come back after CONT")
+        self.machine.to_sim()
 
     def run(self, others):
         """WORK typed once; `others` ({name: [pid, ...]}) watched meanwhile."""
         def work():
             self.machine.send(WORK)
-        self._resume()
+        self.machine.cont()                      # outside the timing
         try:
             return timed({"simulator": [self.machine.child.pid], **others}, work)
         finally:
-            self._hold()
+            self.machine.to_sim()
 
     def __enter__(self):
         return self

@@ -19,7 +19,6 @@ import signal
 import sys
 import tempfile
 import termios
-import time
 import tty
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -33,7 +32,8 @@ from harness.machine.build import KERNEL, PRISTINE_DISK
 from harness.machine.console_halt import HaltWatcher
 from harness.machine.console_watch import Leave, LineWatcher
 from harness.machine.kernel_layout import KernelMapError, read_kernel_map
-from harness.machine.key_feed import CONT_WAIT_S, KeyFeed, shown
+from harness.machine.key_feed import KeyFeed, shown
+from harness.machine.pty_child import probe_prompt
 from harness.machine.pty_spawn import Spawn
 
 # the 11/23's pace (CLK RATE, 300K instructions/s) from the first instruction; SIMH's
@@ -101,25 +101,6 @@ def quiet_stdout():
     """Nobody reads a closed terminal, and writing to it fails: what would be
     printed goes nowhere rather than cutting a FLUSH short."""
     sys.stdout = open(os.devnull, "w")
-
-
-def probe_prompt(child, tries=40):
-    """After CONT: SIMH discards what was typed before the machine runs
-    (TCSAFLUSH), so wait for that (the pty leaves sim>'s line editing; a pty that
-    never edits lines, such as the console's own, has nothing to wait for) and type
-    an empty line until the FORTH answers it.
-    0 answered, 2 no answer, 3 the simulator exited. (A late answer to an
-    earlier empty line may come after this returns: _flush allows for it.)"""
-    ok = " ok\r\n" if child.encoding else b" ok\r\n"   # str or bytes, as the child reads
-    deadline = time.monotonic() + CONT_WAIT_S
-    while pty_child.line_editing(child.child_fd) and time.monotonic() < deadline:
-        time.sleep(0.001)                          # no event says so: a short poll
-    for _ in range(tries):
-        child.send("\r")
-        i = child.expect([ok, pexpect.TIMEOUT, pexpect.EOF], timeout=0.25)
-        if i != 1:
-            return 0 if i == 0 else 3
-    return 2
 
 
 @dataclass

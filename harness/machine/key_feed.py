@@ -36,13 +36,11 @@ import termios
 import time
 
 from harness.machine.console_watch import Leave
-from harness.machine.pty_child import line_editing
+from harness.machine.pty_child import CONT_WAIT_S, line_editing
 
 WINDOW = 256                 # characters the pty may hold: taken back at ^E, dropped at ^C
-# After CONT the queue waits until SIMH has put the pty out of sim>'s line editing (it
-# flushes the pty as it does: TCSAFLUSH, sim_console.c), at most CONT_WAIT_S; where
-# sim>'s mode could not be seen, RESUME_AFTER_CONT_S.
-CONT_WAIT_S = 2.0
+# After CONT the queue waits until SIMH has put the pty out of sim>'s line editing,
+# at most pty_child.CONT_WAIT_S; where sim>'s mode could not be seen, RESUME_AFTER_CONT_S.
 RESUME_AFTER_CONT_S = 0.3
 STOP_KEY_WAIT_S = 2.0        # at most this long waiting for sim> after ^E
 CTRL_C, CTRL_E, CTRL_U = 3, 5, 21

@@ -134,13 +134,37 @@ class Machine:
         """Send several lines; their outputs concatenated."""
         return "".join(self.send(line, timeout) for line in text.splitlines())
 
+    # ---- SIMH's sim> prompt -------------------------------------------------------
+    def to_sim(self, timeout=None):
+        """^E: the machine stops at sim> (waiting there, the simulator uses no CPU)."""
+        self.child.sendcontrol("e")
+        self.child.expect(SIM_PROMPT, timeout=timeout or self.timeout)
+        self.at_sim_prompt = True
+
+    def simh(self, command):
+        """One SIMH command at sim>; what it printed."""
+        self.child.sendline(command)
+        self.child.expect(SIM_PROMPT)
+        return self.child.before
+
+    def cont(self):
+        """CONT: the machine runs again, the FORTH answering (pty_child.probe_prompt);
+        then a line whose answer is waited for, so that no late answer to the probe's
+        empty lines is taken for the next line's."""
+        self.child.sendline("cont")
+        self.at_sim_prompt = False
+        probed = pty_child.probe_prompt(self.child)
+        if probed != 0:
+            self._stopped("CONT", timed_out=(probed == 2))
+        self.child.send(".( resumed)\r")
+        self.child.expect(r"\) resumed ok\r\n", timeout=self.timeout)   # its echo, its text
+
     # ---- shutdown -----------------------------------------------------------------
     def close(self):
         if self.child.isalive():
             try:
                 if not self.at_sim_prompt:
-                    self.child.sendcontrol("e")
-                    self.child.expect(SIM_PROMPT, timeout=5)
+                    self.to_sim(timeout=5)
                 pty_child.quit_simh(self.child, timeout=5)   # FLUSHes, or -F
             except (pexpect.TIMEOUT, pexpect.EOF, OSError):
                 pass

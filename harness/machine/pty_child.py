@@ -26,6 +26,9 @@ LEAVE_REFUSED = r"(?:QUIT|EXIT|BYE) refused: [^\r\n]*"
 
 
 EXIT_GRACE_S = 5                    # a child whose EOF was read gets this long to exit
+# After CONT, at most this long until SIMH has put the pty out of sim>'s line
+# editing (it flushes the pty as it does: TCSAFLUSH, sim_console.c)
+CONT_WAIT_S = 2.0
 
 
 def exited(child, seconds):
@@ -85,3 +88,23 @@ def line_editing(fd):
         return bool(termios.tcgetattr(fd)[3] & termios.ICANON)
     except (termios.error, OSError):
         return None
+
+
+def probe_prompt(child, tries=40):
+    """After CONT: SIMH discards what was typed before the machine runs
+    (TCSAFLUSH), so wait for that (the pty leaves sim>'s line editing; a pty that
+    never edits lines, such as the console's own, has nothing to wait for) and type
+    an empty line until the FORTH answers it.
+    0 answered, 2 no answer, 3 the simulator exited. (A late answer to an
+    earlier empty line may come after this returns: console_session's _flush and
+    Machine.cont allow for it.)"""
+    ok = " ok\r\n" if child.encoding else b" ok\r\n"   # str or bytes, as the child reads
+    deadline = time.monotonic() + CONT_WAIT_S
+    while line_editing(child.child_fd) and time.monotonic() < deadline:
+        time.sleep(0.001)                          # no event says so: a short poll
+    for _ in range(tries):
+        child.send("\r")
+        i = child.expect([ok, pexpect.TIMEOUT, pexpect.EOF], timeout=0.25)
+        if i != 1:
+            return 0 if i == 0 else 3
+    return 2

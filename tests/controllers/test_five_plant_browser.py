@@ -10,7 +10,7 @@ from selenium.webdriver.common.by import By
 
 from harness.lab.launch import CHROMEDRIVER, CHROMIUM, have_browser, headless_browser
 from harness.machine.build import PRISTINE_DISK, fresh_disk
-from harness.machine.console_session import probe_prompt
+from harness.machine.pty_child import probe_prompt
 from tests.controllers.test_lockstep_launch import harness, leave
 from tests.lab.labpage import ARTIFACTS, full_session, wait_for
 

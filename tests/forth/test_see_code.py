@@ -10,8 +10,7 @@ import tempfile
 import pytest
 
 from harness.machine.build import fresh_disk
-from harness.machine.console_session import probe_prompt
-from harness.machine.machine import SIM_PROMPT, Machine
+from harness.machine.machine import Machine
 
 LINE = re.compile(r"^([0-7]+): (.*?)((?: \\ \S+)*)\s*$")   # text, then \ NAME notes
 SIMH_LINE = re.compile(r"^([0-7]+):\t(.*?)\s*$", re.M)
@@ -46,17 +45,13 @@ def see_lines(text):
 def simh_disassembly(m, spans):
     """SIMH's EXAMINE -M text by address over each (first, last) address span,
     from the sim> prompt (SIMH steps by its own instruction lengths)."""
-    m.child.sendcontrol("e")
-    m.child.expect(SIM_PROMPT)
+    m.to_sim()
     found = {}
     ranges = [f"{first:o}-{last:o}" for first, last in spans]
     for i in range(0, len(ranges), 50):             # an address list: 50 spans a command
-        m.child.sendline("e -m " + ",".join(ranges[i:i + 50]))
-        m.child.expect(SIM_PROMPT)
-        found.update((int(a, 8), t) for a, t in SIMH_LINE.findall(m.child.before))
-    m.child.sendline("cont")
-    assert probe_prompt(m.child) == 0    # SIMH drops what is typed as it resumes
-    m.send(".( sync)")
+        found.update((int(a, 8), t)
+                     for a, t in SIMH_LINE.findall(m.simh("e -m " + ",".join(ranges[i:i + 50]))))
+    m.cont()
     return found
 
 

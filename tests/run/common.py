@@ -71,7 +71,7 @@ def outlived(child, seconds=30):
 
 def simh_command(child, command):
     """^E, one SIMH command, CONT (and the machine running again); what it printed."""
-    from harness.machine.console_session import probe_prompt
+    from harness.machine.pty_child import probe_prompt
     child.send("\x05")
     child.expect("sim> ")
     child.send(command + "\r")

@@ -6,7 +6,7 @@ import os
 import pytest
 
 from harness.cli import main
-from harness.machine.console_session import probe_prompt
+from harness.machine.pty_child import probe_prompt
 from harness.machine.build import fresh_disk
 from tests.run.common import (IDLE_SPEED, ended, failing_fsync_library, harness_console,
                               needs_build, outlived, simh_command)
